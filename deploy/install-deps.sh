@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package that cyclopt's build, tests and benchmarks need.
+# Idempotent; run as root (or with sudo). Packages come only from Debian's archive.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libeigen3-dev                 # linear algebra, fixed-size types
+  coinor-libipopt-dev           # Ipopt 3.11.9 with MUMPS (pkg-config: ipopt)
+  liblcm-dev liblcm-bin         # LCM 1.3.1: library, lcm-gen, lcm-logger
+  libglib2.0-dev                # needed by lcm.pc
+  libsqlite3-dev sqlite3        # results database and the sqlite3 shell for queries
+  nlohmann-json3-dev            # JSON specs
+  libgtest-dev libgmock-dev     # unit tests
+  libbenchmark-dev              # benchmarks
+  iproute2 util-linux           # ip / unshare for network-namespace integration tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: installed ${missing[*]}"
