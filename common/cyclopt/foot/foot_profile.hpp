@@ -119,19 +119,24 @@ void add_transition(const Transition<S>& tr, int periodic_terms, const T& theta,
   out.dddF += half_l * (g3 * H + 3.0 * g2 * H1 + 3.0 * g1 * H2 + g * H3);
 }
 
+// The sign-determining bracket of eq. (3.14) / (A.1) for one tanh term at a = theta - delta:
+// (2cos a - 1 + k^2 + 6 tanh^2) - 6/k sin a tanh - (1 - cos a)(2 - 6 tanh^2)/k^2.
+// Appendix A proves it positive for every real a and k > 0.
+template <class T>
+T convexity_bracket(const T& a, const T& k, const T& t) {
+  const T half_a_sin = sin(0.5 * a);
+  const T one_minus_cos = 2.0 * half_a_sin * half_a_sin;
+  const T t2 = t * t;
+  return (2.0 * cos(a) - 1.0 + k * k + 6.0 * t2) - 6.0 / k * sin(a) * t - one_minus_cos * (2.0 - 6.0 * t2) / (k * k);
+}
+
 // Closed-form curvature radius of one tanh term of a transition, eq. (3.14):
-// l/(2k) sech^2(a/k) [ (2cos a - 1 + k^2 + 6 tanh^2) - 6/k sin a tanh - (1 - cos a)(2 - 6 tanh^2)/k^2 ]
-// The bracket is positive for every a and k > 0 (appendix A, eq. A.1).
+// l/(2k) sech^2(a/k) * convexity_bracket(a, k).
 template <class T, class S>
 T curvature_radius_term(const Transition<S>& tr, const T& a) {
   const T k = T(tr.k);
   const TanhTerm<T> tt = tanh_term(T(a / k));
-  const T half_a_sin = sin(0.5 * a);
-  const T one_minus_cos = 2.0 * half_a_sin * half_a_sin;
-  const T t2 = tt.t * tt.t;
-  const T bracket = (2.0 * cos(a) - 1.0 + k * k + 6.0 * t2) - 6.0 / k * sin(a) * tt.t -
-                    one_minus_cos * (2.0 - 6.0 * t2) / (k * k);
-  return T(tr.length) / (2.0 * k) * tt.s * bracket;
+  return T(tr.length) / (2.0 * k) * tt.s * convexity_bracket(a, k, tt.t);
 }
 
 }  // namespace detail
