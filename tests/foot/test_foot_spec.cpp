@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <fstream>
+
 namespace cyclopt::foot {
 namespace {
 
@@ -105,6 +108,33 @@ TEST(ConvexityConstraints, HoldForAdmissibleFeet) {
   EXPECT_LT((li.A * bad.parameters + li.b).minCoeff(), 0.0);
   EXPECT_EQ(li.A.rows(), 11);                              // eq. (3.24) has 11 rows
   EXPECT_EQ(convexity_constraints(FootModel::hm).A.rows(), 7);  // eq. (3.21) has 7 rows
+}
+
+}  // namespace
+}  // namespace cyclopt::foot
+
+namespace cyclopt::foot {
+namespace {
+
+// proto/schemas/foot.schema.json states the same fields and ranges as parameter_layout().
+TEST(FootSchema, MatchesTheParameterLayout) {
+  std::ifstream in(std::string(CYCLOPT_SOURCE_DIR) + "/proto/schemas/foot.schema.json");
+  ASSERT_TRUE(in) << "schema file missing";
+  const nlohmann::json schema = nlohmann::json::parse(in);
+  for (FootModel model : {FootModel::hm, FootModel::hmt}) {
+    const nlohmann::json* variant = nullptr;
+    for (const auto& v : schema["oneOf"])
+      if (v["properties"]["model"]["const"] == to_string(model)) variant = &v;
+    ASSERT_NE(variant, nullptr) << to_string(model);
+    for (const ParameterInfo& p : parameter_layout(model)) {
+      const auto& prop = (*variant)["properties"][std::string(p.name)];
+      EXPECT_DOUBLE_EQ(prop["minimum"].get<double>(), p.min) << p.name;
+      EXPECT_DOUBLE_EQ(prop["maximum"].get<double>(), p.max) << p.name;
+      const auto& req = (*variant)["required"];
+      EXPECT_NE(std::find(req.begin(), req.end(), std::string(p.name)), req.end()) << p.name;
+    }
+    EXPECT_EQ((*variant)["required"].size(), parameter_layout(model).size() + 1);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,125 @@
+// cyclopt-foot: describe a foot geometry (seed 001, ch. 3 and appendix E) from a preset or a
+// JSON spec: parameters, admissible angles, mass properties and the rolling kinematics.
+#include "cyclopt/foot/foot_parameters.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/foot/foot_report.hpp"
+#include "cyclopt/foot/foot_spec.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: cyclopt-foot [--preset NAME | --foot FILE.json] [--density RHO] [--samples N] [--json]
+       cyclopt-foot --list-presets
+
+Describes a foot geometry of the walker: polygon transitions, admissible foot angles, mass
+properties from an area density (appendix E of the seed) and the ankle / contact-point kinematics
+while the foot rolls. Units are SI (m, rad, kg, kg/m^2).
+
+  --preset NAME   one of the seed's fitted feet (see --list-presets); default P2-shoes-left-HMT
+  --foot FILE     a JSON foot spec (schema: proto/schemas/foot.schema.json)
+  --density RHO   area density in kg/m^2 for mass properties (default for presets: 36.9)
+  --samples N     rolling-kinematics samples over the admissible range (2..100000, default 13)
+  --json          print the full report as JSON instead of a table
+Exit codes: 0 ok, 2 bad usage or invalid foot spec, 3 unreadable file.
+)";
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "cyclopt-foot: %s\n%s", message.c_str(), kUsage);
+  return 2;
+}
+
+void print_table(const nlohmann::json& r) {
+  const auto& spec = r["spec"];
+  std::printf("foot %s (model %s)\n", spec.value("name", std::string("-")).c_str(), spec["model"].get<std::string>().c_str());
+  for (const auto& [key, value] : spec.items())
+    if (value.is_number()) std::printf("  %-16s %12.6g\n", key.c_str(), value.get<double>());
+  std::printf("admissible foot angle: [%.4f, %.4f] rad\n", r["admissible_theta"][0].get<double>(),
+              r["admissible_theta"][1].get<double>());
+  if (r.contains("mass_properties")) {
+    const auto& m = r["mass_properties"];
+    std::printf("mass properties (appendix E):\n  area %.6f m^2, mass %.4f kg, CoM (%.4f, %.4f) m from the ankle,\n"
+                "  J_ankle %.6f kg m^2, J_CoM %.6f kg m^2, theta_F0 %.4f rad\n",
+                m["area"].get<double>(), m["mass"].get<double>(), m["com_x"].get<double>(), m["com_z"].get<double>(),
+                m["inertia_ankle"].get<double>(), m["inertia_com"].get<double>(), m["theta_F0"].get<double>());
+  }
+  std::printf("%10s %10s %10s %12s %12s %14s\n", "theta/rad", "x_A/m", "z_A/m", "x_AC/m", "z_AC/m", "R/m");
+  for (const auto& s : r["rolling"])
+    std::printf("%10.4f %10.5f %10.5f %12.5f %12.5f %14.6g\n", s["theta"].get<double>(), s["ankle_x"].get<double>(),
+                s["ankle_z"].get<double>(), s["contact_x_from_ankle"].get<double>(),
+                s["contact_z_from_ankle"].get<double>(), s["curvature_radius"].get<double>());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cyclopt::foot;
+  std::string preset = "P2-shoes-left-HMT", file;
+  std::optional<double> density;
+  FootReportOptions options;
+  options.samples = 13;
+  bool json = false;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      auto next = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+        return argv[++i];
+      };
+      if (a == "--help" || a == "-h") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      } else if (a == "--list-presets") {
+        for (const FootPreset& p : foot_presets()) std::printf("%-22s %s\n", std::string(p.name).c_str(), std::string(p.source).c_str());
+        return 0;
+      } else if (a == "--preset") {
+        preset = next();
+      } else if (a == "--foot") {
+        file = next();
+      } else if (a == "--density") {
+        density = std::stod(next());
+      } else if (a == "--samples") {
+        options.samples = std::stoi(next());
+        if (options.samples < 2 || options.samples > 100000) throw std::invalid_argument("--samples must be in [2, 100000]");
+      } else if (a == "--json") {
+        json = true;
+      } else {
+        return usage_error("unknown argument '" + a + "'");
+      }
+    }
+  } catch (const std::exception& e) {
+    return usage_error(e.what());
+  }
+  try {
+    FootSpec spec;
+    if (!file.empty()) {
+      std::ifstream in(file);
+      if (!in) {
+        std::fprintf(stderr, "cyclopt-foot: cannot read %s\n", file.c_str());
+        return 3;
+      }
+      spec = foot_spec_from_json(nlohmann::json::parse(in));
+    } else {
+      spec = foot_preset(preset).spec;
+      spec.density = 36.9;  // section 10.2's density of the P2 foot
+    }
+    if (density) spec.density = *density;
+    const nlohmann::json report = foot_report(spec, options);
+    if (json)
+      std::cout << report.dump(2) << "\n";
+    else
+      print_table(report);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::fprintf(stderr, "cyclopt-foot: %s is not valid JSON: %s\n", file.c_str(), e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-foot: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
