@@ -4,10 +4,12 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/foot/foot_report.hpp"
 #include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/plot/foot_figures.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -26,6 +28,8 @@ while the foot rolls. Units are SI (m, rad, kg, kg/m^2).
   --density RHO   area density in kg/m^2 for mass properties (default for presets: 36.9)
   --samples N     rolling-kinematics samples over the admissible range (2..100000, default 13)
   --json          print the full report as JSON instead of a table
+  --plot-dir DIR  also write foot_shape.{png,svg} (Fig. 3.5a) and ankle_trajectory.{png,svg}
+                  (Fig. 3.5b) into DIR
 Exit codes: 0 ok, 2 bad usage or invalid foot spec, 3 unreadable file.
 )";
 
@@ -64,6 +68,7 @@ int main(int argc, char** argv) {
   FootReportOptions options;
   options.samples = 13;
   bool json = false;
+  std::string plot_dir;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -86,6 +91,8 @@ int main(int argc, char** argv) {
       } else if (a == "--samples") {
         options.samples = std::stoi(next());
         if (options.samples < 2 || options.samples > 100000) throw std::invalid_argument("--samples must be in [2, 100000]");
+      } else if (a == "--plot-dir") {
+        plot_dir = next();
       } else if (a == "--json") {
         json = true;
       } else {
@@ -114,6 +121,15 @@ int main(int argc, char** argv) {
       std::cout << report.dump(2) << "\n";
     else
       print_table(report);
+    if (!plot_dir.empty()) {
+      std::filesystem::create_directories(plot_dir);
+      for (const char* ext : {".png", ".svg"}) {
+        cyclopt::plot::render(cyclopt::plot::foot_shape_scene(spec), plot_dir + "/foot_shape" + ext);
+        cyclopt::plot::render(cyclopt::plot::ankle_trajectory_chart(spec), plot_dir + "/ankle_trajectory" + ext);
+      }
+      std::fprintf(stderr, "cyclopt-foot: wrote %s/foot_shape.{png,svg} and %s/ankle_trajectory.{png,svg}\n",
+                   plot_dir.c_str(), plot_dir.c_str());
+    }
   } catch (const nlohmann::json::parse_error& e) {
     std::fprintf(stderr, "cyclopt-foot: %s is not valid JSON: %s\n", file.c_str(), e.what());
     return 2;

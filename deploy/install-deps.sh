@@ -11,6 +11,7 @@ packages=(
   libglib2.0-dev                # needed by lcm.pc
   libsqlite3-dev sqlite3        # results database and the sqlite3 shell for queries
   nlohmann-json3-dev            # JSON specs
+  libcairo2-dev fonts-dejavu-core  # plots (PNG, SVG, PDF) and their font
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev              # benchmarks
   iproute2 util-linux           # ip / unshare for network-namespace integration tests

@@ -1,0 +1,59 @@
+#include "cyclopt/plot/line_chart.hpp"
+
+#include "cyclopt/plot/legend.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cyclopt::plot {
+void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
+  std::vector<double> xs, ys;
+  for (const Series& s : chart.series) {
+    if (s.x.size() != s.y.size())
+      throw std::invalid_argument("series '" + s.label + "': x has " + std::to_string(s.x.size()) + " values, y has " +
+                                  std::to_string(s.y.size()));
+    bool any = false;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+        xs.push_back(s.x[i]);
+        ys.push_back(s.y[i]);
+        any = true;
+      }
+    if (!any) throw std::invalid_argument("series '" + s.label + "' has no finite point");
+  }
+  Canvas canvas(path, options.width, options.height);
+  canvas.fill_background({1, 1, 1, 1});
+  Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(data_range(ys, 0.05)),
+            chart.axes);
+  axes.draw_grid();
+  axes.clip_to_plot_area();
+  std::vector<Point> occupied;
+  std::vector<LegendEntry> legend;
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    const Series& s = chart.series[i];
+    const Color c = s.color.value_or(palette(static_cast<int>(i)));
+    std::vector<Point> run;
+    auto flush = [&]() {
+      canvas.polyline(run, c, 2.2, s.dashed);
+      run.clear();
+    };
+    for (std::size_t j = 0; j < s.x.size(); ++j) {
+      if (!std::isfinite(s.x[j]) || !std::isfinite(s.y[j])) {
+        flush();
+        continue;
+      }
+      run.push_back(axes.to_pixel(s.x[j], s.y[j]));
+      occupied.push_back(run.back());
+      if (s.markers) canvas.circle(run.back(), 3.2, c);
+    }
+    flush();
+    legend.push_back({s.label, c, s.dashed, true, s.markers});
+  }
+  axes.reset_clip();
+  axes.draw_frame();
+  draw_legend(canvas, axes, legend, occupied);
+  canvas.finish();
+}
+
+}  // namespace cyclopt::plot

@@ -1,0 +1,35 @@
+#pragma once
+// Curves over a common x axis with a legend, e.g. cost of transport over walking speed for
+// several feet (seed 001, Fig. 9.19a) or maximal joint torques over speed (Fig. 9.4).
+
+#include "cyclopt/plot/axes.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cyclopt::plot {
+
+struct Series {
+  std::string label;
+  std::vector<double> x, y;  // same length; non-finite y values break the curve
+  bool markers = true;
+  bool dashed = false;
+  std::optional<Color> color;  // default: palette(index)
+};
+
+struct LineChart {
+  AxesStyle axes;
+  std::vector<Series> series;
+  std::optional<Range> x_range, y_range;  // default: fitted to the data
+};
+
+struct RenderOptions {
+  double width = 900, height = 600;
+};
+
+// Writes the chart to `path` (.png, .svg or .pdf). Throws std::invalid_argument for series with
+// mismatched lengths or no finite point at all, std::runtime_error when the file cannot be written.
+void render(const LineChart& chart, const std::string& path, const RenderOptions& options = {});
+
+}  // namespace cyclopt::plot

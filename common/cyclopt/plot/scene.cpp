@@ -1,0 +1,71 @@
+#include "cyclopt/plot/scene.hpp"
+
+#include "cyclopt/plot/legend.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace cyclopt::plot {
+namespace {
+
+constexpr Color kGround{0.35, 0.25, 0.15, 1};
+
+std::vector<LegendEntry> legend_entries(const Scene& scene) {
+  std::vector<LegendEntry> out;
+  std::set<std::string> seen;
+  for (const Shape& s : scene.shapes)
+    if (!s.legend.empty() && seen.insert(s.legend).second) out.push_back({s.legend, s.color, s.dashed, true, false});
+  for (const Marker& m : scene.markers)
+    if (!m.legend.empty() && seen.insert(m.legend).second) out.push_back({m.legend, m.color, false, false, true});
+  return out;
+}
+
+}  // namespace
+
+void render(const Scene& scene, const std::string& path, const RenderOptions& options) {
+  std::vector<double> xs, zs;
+  for (const Shape& s : scene.shapes)
+    for (const auto& p : s.points) {
+      xs.push_back(p[0]);
+      zs.push_back(p[1]);
+    }
+  for (const Marker& m : scene.markers) {
+    xs.push_back(m.x);
+    zs.push_back(m.z);
+  }
+  if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
+  if (scene.ground_z) zs.push_back(*scene.ground_z);
+  Canvas canvas(path, options.width, options.height);
+  canvas.fill_background({1, 1, 1, 1});
+  Axes axes(canvas, data_range(xs, scene.pad), data_range(zs, scene.pad), scene.axes, /*equal_scale=*/true);
+  axes.draw_grid();
+  axes.clip_to_plot_area();
+  if (scene.ground_z) {
+    const Range xr = axes.x_range();
+    const Point a = axes.to_pixel(xr.lo, *scene.ground_z), b = axes.to_pixel(xr.hi, *scene.ground_z);
+    canvas.fill_polygon({a, b, {b.x, b.y + 14}, {a.x, a.y + 14}}, {0.93, 0.89, 0.83, 1});
+    for (double x = a.x; x < b.x; x += 12) canvas.line({x, a.y}, {x - 10, a.y + 12}, kGround, 0.8);
+    canvas.line(a, b, kGround, 2.0);
+  }
+  std::vector<Point> occupied;
+  for (const Shape& s : scene.shapes) {
+    std::vector<Point> px;
+    px.reserve(s.points.size());
+    for (const auto& p : s.points) px.push_back(axes.to_pixel(p[0], p[1]));
+    occupied.insert(occupied.end(), px.begin(), px.end());
+    if (s.fill) canvas.fill_polygon(px, *s.fill);
+    canvas.polyline(px, s.color, s.width, s.dashed, s.closed);
+  }
+  for (const Marker& m : scene.markers) {
+    occupied.push_back(axes.to_pixel(m.x, m.z));
+    canvas.circle(occupied.back(), m.radius, m.color);
+  }
+  axes.reset_clip();
+  axes.draw_frame();
+  draw_legend(canvas, axes, legend_entries(scene), occupied);
+  canvas.finish();
+}
+
+}  // namespace cyclopt::plot

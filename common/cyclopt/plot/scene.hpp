@@ -1,0 +1,43 @@
+#pragma once
+// A 2-D drawing in metres with equal scales on both axes: foot outlines (seed 001, Fig. 3.5),
+// stick-figure stroboscopes of gaits (Fig. 9.2) and giant swings (seed 000, Fig. 5.5).
+
+#include "cyclopt/plot/axes.hpp"
+#include "cyclopt/plot/line_chart.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cyclopt::plot {
+
+struct Shape {
+  std::vector<std::array<double, 2>> points;  // (x, z) in metres
+  Color color{0.1, 0.1, 0.1, 1};
+  double width = 1.6;  // pixels
+  bool dashed = false;
+  bool closed = false;
+  std::optional<Color> fill;
+  std::string legend;  // shown in the legend when not empty
+};
+
+struct Marker {
+  double x = 0, z = 0;
+  Color color{0.84, 0.15, 0.16, 1};
+  double radius = 4;   // pixels
+  std::string legend;  // shown in the legend when not empty (once per distinct text)
+};
+
+struct Scene {
+  AxesStyle axes;
+  std::vector<Shape> shapes;
+  std::vector<Marker> markers;
+  std::optional<double> ground_z;  // draws the ground line and hatching at this height
+  double pad = 0.05;               // margin around the content, fraction of its size
+};
+
+// Writes the scene to `path` (.png, .svg or .pdf); throws std::invalid_argument for an empty scene.
+void render(const Scene& scene, const std::string& path, const RenderOptions& options = {});
+
+}  // namespace cyclopt::plot

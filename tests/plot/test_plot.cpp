@@ -1,0 +1,126 @@
+// Plots: files are valid PNG/SVG/PDF of the requested size, and the curves, outlines and markers
+// that were asked for are really drawn (pixels of their colours exist).
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/plot/axes.hpp"
+#include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/line_chart.hpp"
+#include "cyclopt/plot/scene.hpp"
+#include "png_inspection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace cyclopt::plot {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path out_dir() {
+  const fs::path d = fs::temp_directory_path() / "cyclopt_test_plot";
+  fs::create_directories(d);
+  return d;
+}
+
+std::string head_of(const fs::path& p, std::size_t n) {
+  std::ifstream in(p, std::ios::binary);
+  std::string s(n, '\0');
+  in.read(s.data(), static_cast<std::streamsize>(n));
+  s.resize(static_cast<std::size_t>(in.gcount()));
+  return s;
+}
+
+LineChart two_curves() {
+  LineChart c;
+  c.axes = {"test chart", "speed v (m/s)", "cost of transport (-)", true};
+  Series a{"foot A", {}, {}, true, false, std::nullopt};
+  Series b{"foot B", {}, {}, false, true, std::nullopt};
+  for (int i = 0; i <= 20; ++i) {
+    const double v = 0.3 + 0.1 * i;
+    a.x.push_back(v);
+    a.y.push_back(0.1 + 0.05 * (v - 1.2) * (v - 1.2));
+    b.x.push_back(v);
+    b.y.push_back(i == 10 ? std::nan("") : 0.15 + 0.03 * v);  // a gap: no solution at one speed
+  }
+  c.series = {a, b};
+  return c;
+}
+
+TEST(NiceTicks, CoverTheRangeWithRoundSteps) {
+  const auto t = nice_ticks({0.3, 2.3}, 6);
+  EXPECT_LE(t.front(), 0.3);
+  EXPECT_GE(t.back(), 2.3);
+  EXPECT_GE(t.size(), 4u);
+  EXPECT_LE(t.size(), 12u);
+  const double step = t[1] - t[0];
+  const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
+  EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 2.5) < 1e-9 ||
+              std::abs(mantissa - 5) < 1e-9)
+      << step;
+}
+
+TEST(LineChart, PngHasRequestedSizeAndEveryCurveColour) {
+  const fs::path p = out_dir() / "chart.png";
+  render(two_curves(), p.string(), {800, 500});
+  const testing::PngImage img = testing::inspect_png(p.string());
+  EXPECT_EQ(img.width, 800);
+  EXPECT_EQ(img.height, 500);
+  EXPECT_GT(img.drawn_pixels, 5000);  // frame, ticks, labels, curves
+  EXPECT_GT(img.count(palette(0)), 300) << "curve A missing";
+  EXPECT_GT(img.count(palette(1)), 150) << "curve B missing";
+}
+
+TEST(LineChart, SvgAndPdfAreWritten) {
+  const fs::path svg = out_dir() / "chart.svg", pdf = out_dir() / "chart.pdf";
+  render(two_curves(), svg.string());
+  render(two_curves(), pdf.string());
+  const std::string s = head_of(svg, 4096);
+  EXPECT_NE(s.find("<svg"), std::string::npos);
+  EXPECT_NE(s.find("width=\"900"), std::string::npos);
+  EXPECT_EQ(head_of(pdf, 5), "%PDF-");
+  EXPECT_GT(fs::file_size(svg), 5000u);
+}
+
+TEST(LineChart, RejectsBadInput) {
+  LineChart c = two_curves();
+  EXPECT_THROW(render(c, (out_dir() / "chart.jpg").string()), std::invalid_argument);
+  c.series[0].y.pop_back();
+  EXPECT_THROW(render(c, (out_dir() / "bad.png").string()), std::invalid_argument);
+  EXPECT_THROW(render(two_curves(), "/nonexistent-dir/x.png"), std::runtime_error);
+}
+
+TEST(FootFigures, ShapeShowsOutlinePolygonAnkleAndCentreOfMass) {
+  foot::FootSpec spec = foot::foot_preset("P2-shoes-left-HMT").spec;
+  spec.density = 36.9;
+  const Scene scene = foot_shape_scene(spec);
+  ASSERT_EQ(scene.shapes.size(), 2u);
+  EXPECT_GT(scene.shapes[0].points.size(), 200u);
+  ASSERT_EQ(scene.markers.size(), 2u);
+  const fs::path p = out_dir() / "foot_shape.png";
+  render(scene, p.string());
+  const testing::PngImage img = testing::inspect_png(p.string());
+  EXPECT_EQ(img.width, 900);
+  EXPECT_GT(img.count(palette(0)), 400) << "outline missing";
+  EXPECT_GT(img.count(palette(3)), 30) << "centre-of-mass marker missing";
+  // The outline lies inside the polygon's bounding box grown by the rounding.
+  for (const auto& pt : scene.shapes[0].points) {
+    EXPECT_GT(pt[0], -0.09);
+    EXPECT_LT(pt[0], 0.27);
+    EXPECT_LT(pt[1], 0.001);
+  }
+}
+
+TEST(FootFigures, AnkleTrajectoryChartHasBothCurves) {
+  const LineChart c = ankle_trajectory_chart(foot::foot_preset("P1-barefoot-left-HM").spec);
+  ASSERT_EQ(c.series.size(), 2u);
+  const fs::path p = out_dir() / "ankle.png";
+  render(c, p.string());
+  const testing::PngImage img = testing::inspect_png(p.string());
+  EXPECT_GT(img.count(palette(0)), 300);
+  EXPECT_GT(img.count(palette(1)), 150);
+}
+
+}  // namespace
+}  // namespace cyclopt::plot
