@@ -124,3 +124,35 @@ TEST(FootFigures, AnkleTrajectoryChartHasBothCurves) {
 
 }  // namespace
 }  // namespace cyclopt::plot
+
+#include "cyclopt/plot/html_report.hpp"
+
+namespace cyclopt::plot {
+namespace {
+
+TEST(HtmlReport, SelfContainedWithEscapedTextTablesAndInlineFigures) {
+  Report r;
+  r.title = "job 7 <sweep>";
+  r.subtitle = "machine & date";
+  ReportSection s;
+  s.heading = "Results";
+  s.code = R"({"foot": "P2 & co"})";
+  s.tables.push_back({{"v (m/s)", "f_mech"}, {{"0.3", "0.12"}, {"1.3", "0.08"}}});
+  s.figures.push_back({"cost of transport", svg_of(two_curves())});
+  r.sections.push_back(s);
+  const std::string html = to_html(r);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("job 7 &lt;sweep&gt;"), std::string::npos);
+  EXPECT_NE(html.find("P2 &amp; co"), std::string::npos);
+  EXPECT_NE(html.find("<td>1.3</td><td>0.08</td>"), std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);       // inlined, not a separate document
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // nothing external
+  EXPECT_EQ(html.find("<img"), std::string::npos);
+  const fs::path p = out_dir() / "report.html";
+  write_html(r, p.string());
+  EXPECT_GT(fs::file_size(p), 5000u);
+}
+
+}  // namespace
+}  // namespace cyclopt::plot

@@ -1,0 +1,90 @@
+#include "cyclopt/plot/html_report.hpp"
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace cyclopt::plot {
+namespace {
+
+template <class Drawing>
+std::string svg_via_file(const Drawing& d, const RenderOptions& options) {
+  static std::atomic<int> counter{0};
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path() /
+                                    ("cyclopt_fig_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".svg");
+  render(d, tmp.string(), options);
+  std::ifstream in(tmp);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::filesystem::remove(tmp);
+  std::string svg = ss.str();
+  // Drop the XML declaration so the document can be inlined in HTML.
+  if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
+  return svg;
+}
+
+constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,Helvetica,Arial,sans-serif;margin:2em auto;max-width:980px;color:#1a1a1a}
+h1{font-size:1.6em;margin-bottom:0}.sub{color:#666;margin-top:.2em}h2{font-size:1.25em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}
+table{border-collapse:collapse;margin:.8em 0;font-size:.9em}th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}
+th{background:#f2f2f2}td:first-child,th:first-child{text-align:left}pre{background:#f7f7f7;padding:.8em;overflow-x:auto;font-size:.85em}
+figure{margin:1em 0}figcaption{color:#444;font-size:.9em}svg{max-width:100%;height:auto})";
+
+}  // namespace
+
+std::string svg_of(const LineChart& chart, const RenderOptions& options) { return svg_via_file(chart, options); }
+std::string svg_of(const Scene& scene, const RenderOptions& options) { return svg_via_file(scene, options); }
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string to_html(const Report& report) {
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(report.title)
+    << "</title><style>" << kStyle << "</style></head><body>\n";
+  h << "<h1>" << html_escape(report.title) << "</h1>\n";
+  if (!report.subtitle.empty()) h << "<p class=\"sub\">" << html_escape(report.subtitle) << "</p>\n";
+  for (const ReportSection& s : report.sections) {
+    h << "<h2>" << html_escape(s.heading) << "</h2>\n";
+    if (!s.text.empty()) h << "<p>" << html_escape(s.text) << "</p>\n";
+    if (!s.code.empty()) h << "<pre>" << html_escape(s.code) << "</pre>\n";
+    for (const ReportTable& t : s.tables) {
+      h << "<table><thead><tr>";
+      for (const std::string& c : t.header) h << "<th>" << html_escape(c) << "</th>";
+      h << "</tr></thead><tbody>\n";
+      for (const auto& row : t.rows) {
+        h << "<tr>";
+        for (const std::string& c : row) h << "<td>" << html_escape(c) << "</td>";
+        h << "</tr>\n";
+      }
+      h << "</tbody></table>\n";
+    }
+    for (const ReportFigure& f : s.figures)
+      h << "<figure>" << f.svg << "<figcaption>" << html_escape(f.caption) << "</figcaption></figure>\n";
+  }
+  h << "</body></html>\n";
+  return h.str();
+}
+
+void write_html(const Report& report, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write report '" + path + "'");
+  out << to_html(report);
+  if (!out) throw std::runtime_error("cannot write report '" + path + "'");
+}
+
+}  // namespace cyclopt::plot
