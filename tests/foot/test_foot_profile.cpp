@@ -207,6 +207,7 @@ TEST(FootProfile, AnkleTrajectoryConvergesToPolygonAsKVanishes) {
         err = std::max(err, (ankle_position(rolling_contact(p, th)) - polygon_ankle(vertices, th)).norm());
       }
       const double scale = base.parameters[hm::l_HM];
+      if (&base == &feet.front()) std::printf("P1 HM: max |ankle - polygon ankle| at k = %.0e: %.3e m\n", k, err);
       EXPECT_LE(err, 2.0 * k * scale) << base.name << " k=" << k;
       EXPECT_LT(err, previous) << base.name << " k=" << k;
       previous = err;
