@@ -1,0 +1,66 @@
+#pragma once
+// Plain option and summary structs shared by every NLP solver (Ipopt adapter, the seed's SQP),
+// in the style of Ceres' Solver::Options / Solver::Summary.
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace cyclopt::nlp {
+
+enum class SolverKind { ipopt, sqp };
+
+// One line of progress, handed to SolverOptions::on_iteration after every iteration.
+struct IterationReport {
+  int iteration = 0;
+  double objective = 0.0;
+  double constraint_violation = 0.0;  // max(|c_eq|, max(c_in, 0), bound violation)
+  double kkt_error = 0.0;             // solver's own optimality measure
+  double step_norm = 0.0;
+  double wall_seconds = 0.0;
+};
+
+struct SolverOptions {
+  SolverKind solver = SolverKind::ipopt;
+  int max_iterations = 500;
+  double optimality_tolerance = 1e-8;  // KKT (dual infeasibility) tolerance
+  double constraint_tolerance = 1e-8;  // max constraint violation at termination
+  double max_wall_seconds = std::numeric_limits<double>::infinity();
+  int print_level = 0;  // 0 = silent
+  // Called after every iteration; returning false stops the solver (termination = user_stop).
+  std::function<bool(const IterationReport&)> on_iteration;
+};
+
+enum class Termination {
+  converged,            // KKT point within tolerances
+  acceptable,           // solver's "acceptable" point (looser tolerances)
+  max_iterations,
+  time_limit,
+  infeasible,           // locally infeasible / restoration failed
+  evaluation_failure,   // could not evaluate at (or near) the start point
+  user_stop,
+  numerical_failure,
+};
+
+const char* to_string(Termination t);
+
+struct SolverSummary {
+  Termination termination = Termination::numerical_failure;
+  std::string message;          // solver-specific explanation
+  int iterations = 0;
+  int function_evaluations = 0;  // evaluations without derivatives
+  int jacobian_evaluations = 0;  // evaluations with derivatives
+  int failed_evaluations = 0;    // evaluations that returned !ok
+  double wall_seconds = 0.0;
+  double objective = 0.0;
+  double kkt_error = 0.0;
+  double constraint_violation = 0.0;
+  Eigen::VectorXd x;                      // final point
+  Eigen::VectorXd equality_multipliers;   // Lagrange multipliers at x
+  Eigen::VectorXd inequality_multipliers;
+  bool success() const { return termination == Termination::converged || termination == Termination::acceptable; }
+};
+
+}  // namespace cyclopt::nlp
