@@ -1,10 +1,13 @@
 #pragma once
 // Scalar-type utilities shared by every template in common/: the real value of a scalar (for
-// branching and validation) and a conversion between scalar types.
+// branching and validation), a conversion between scalar types, and the few functions the
+// standard library lacks for std::complex (used by complex-step checks).
 
 #include "cyclopt/autodiff/dual.hpp"
 
+#include <cmath>
 #include <complex>
+#include <numbers>
 
 namespace cyclopt::ad {
 
@@ -15,5 +18,19 @@ double value(const std::complex<T>& x) { return value(x.real()); }
 // Converts a double-valued constant into scalar type T (a constant: zero derivative part).
 template <class T>
 T constant(double x) { return T(x); }
+
+// atan2 for complex arguments, holomorphic in a neighbourhood of real (y, x) off the branch cut:
+// atan(y/x) plus the quadrant correction chosen from the real parts (or pi/2 - atan(x/y) near x = 0).
+template <class T>
+std::complex<T> atan2(const std::complex<T>& y, const std::complex<T>& x) {
+  const double yr = value(y), xr = value(x);
+  if (std::abs(xr) >= std::abs(yr)) {
+    const std::complex<T> base = std::atan(y / x);
+    if (xr >= 0.0) return base;
+    return base + (yr >= 0.0 ? std::numbers::pi : -std::numbers::pi);
+  }
+  const std::complex<T> base = std::atan(x / y);
+  return (yr >= 0.0 ? std::numbers::pi / 2 : -std::numbers::pi / 2) - base;
+}
 
 }  // namespace cyclopt::ad

@@ -1,0 +1,25 @@
+#pragma once
+// Bernstein basis of the virtual constraints q_b,d(theta) = sum_i alpha_i b_i,M(s) (seed 001
+// eq. 5.49-5.52). The grid of eq. (5.93) is uniform in s = (theta - theta+)/(theta- - theta+),
+// independent of theta+-, so the basis and its s-derivatives are tabulated once per (M, P):
+//   q_b,d = alpha B,  q_b,d' = alpha B_s / (theta- - theta+),  q_b,d'' = alpha B_ss / (theta- - theta+)^2.
+
+#include <Eigen/Core>
+
+namespace cyclopt::walker {
+
+struct BezierBasis {
+  int degree = 0;         // M
+  Eigen::VectorXd s;      // grid in [0, 1], P points
+  Eigen::MatrixXd value;  // (M+1) x P: b_i,M(s_k)
+  Eigen::MatrixXd first;  // d/ds
+  Eigen::MatrixXd second; // d^2/ds^2
+};
+
+// Basis on P equidistant points of [0, 1] (eq. 5.93); P >= 2, M >= 2.
+BezierBasis bezier_basis(int degree, int points);
+// Basis at arbitrary s (for forward simulation and plotting): columns of a (M+1) x 3 matrix
+// [b, db/ds, d2b/ds2].
+Eigen::Matrix<double, Eigen::Dynamic, 3> bezier_basis_at(int degree, double s);
+
+}  // namespace cyclopt::walker

@@ -1,0 +1,47 @@
+#pragma once
+// One call that every optimiser and the service use: evaluate a periodic gait at the gait
+// parameters x (and optionally perturbed model parameters), with the dense Jacobian of objective
+// and constraints from forward-mode automatic differentiation (chunks of ad::Dual<kJacobianChunk>).
+
+#include "cyclopt/walker/model_parameters.hpp"
+#include "cyclopt/walker/periodic_gait.hpp"
+
+#include <vector>
+
+namespace cyclopt::walker {
+
+inline constexpr int kJacobianChunk = 8;
+
+// Derivatives of every scalar output with respect to the chosen directions: first the gait
+// parameters x (all of them), then the model parameters listed in `parameter_indices`.
+struct GaitDerivatives {
+  Eigen::RowVectorXd objective, f_mech, f_usq, speed_equality, step_length, step_period, mean_speed, floquet;
+  Eigen::MatrixXd inequalities;  // (10P+3) x directions
+};
+
+struct GaitEvaluation {
+  PeriodicGait<double> gait;
+  bool has_derivatives = false;
+  GaitDerivatives derivatives;
+};
+
+// A walker scene ready to evaluate: the model and the Bezier basis for its (M, P).
+class GaitEvaluator {
+ public:
+  explicit GaitEvaluator(WalkerModel<double> model);
+  const WalkerModel<double>& model() const { return model_; }
+  const BezierBasis& basis() const { return basis_; }
+  int parameter_count() const { return gait_parameter_count(model_.joint_count, model_.constants.bezier_degree); }
+
+  // Values only.
+  PeriodicGait<double> evaluate(const Eigen::VectorXd& x, const GaitOptions& options) const;
+  // Values and derivatives with respect to x and the listed model parameters (indices into p_mod).
+  GaitEvaluation evaluate_with_derivatives(const Eigen::VectorXd& x, const GaitOptions& options,
+                                           const std::vector<int>& parameter_indices = {}) const;
+
+ private:
+  WalkerModel<double> model_;
+  BezierBasis basis_;
+};
+
+}  // namespace cyclopt::walker

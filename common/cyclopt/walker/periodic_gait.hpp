@@ -1,0 +1,255 @@
+#pragma once
+// Semi-analytic periodic gait of the hybrid zero dynamics and everything reconstructed from it
+// (seed 001 sections 5.2.4-5.4): eq. (5.76)-(5.90) on the grid (5.93), states (5.94-5.97), torques
+// (5.35), contact force (5.14), impact impulse (5.28), electric power (5.98-5.100), objectives
+// (5.101-5.102) with the zero-crossing correction of Fig. 5.3, the speed equality (5.103) and the
+// 10P+3 inequalities (5.104).
+//
+// Templated on the scalar: double for values, ad::Dual<N> for exact derivatives with respect to
+// the gait parameters x and/or model parameters, std::complex<double> for complex-step checks.
+
+#include "cyclopt/walker/bezier_basis.hpp"
+#include "cyclopt/walker/virtual_constraints.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace cyclopt::walker {
+
+enum class Objective { mechanical, squared_torque };  // f_mech (5.102), f_usq (5.101)
+
+struct GaitOptions {
+  Objective objective = Objective::mechanical;
+  double speed = 1.3;             // target mean speed v_bar (m/s), eq. (5.103)
+  bool keep_trajectories = true;  // fill PeriodicGait::trajectory
+};
+
+// Indices into the inequality vector (eq. 5.104) for a given P.
+struct InequalityLayout {
+  int points;
+  int impulse() const { return 0; }                        // (a), (b): 3 entries
+  int normal_force() const { return 3; }                   // (c): P
+  int friction() const { return 3 + points; }              // (d): 2P
+  int swing_clearance() const { return 3 + 3 * points; }   // (e): 2 + (P-2)
+  int knee_lower() const { return 3 + 4 * points; }        // (f): 2P
+  int knee_upper() const { return 3 + 6 * points; }        // (g): 2P
+  int torso() const { return 3 + 8 * points; }             // (h): 2P
+  int size() const { return 3 + 10 * points; }
+};
+
+template <class T>
+using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+template <class T>
+using Vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+
+// Reconstructed states on the P grid points (columns).
+template <class T>
+struct GaitTrajectory {
+  Vector<T> theta, time;            // phase variable, time since impact (s)
+  Vector<T> zeta;                   // zeta = sigma^2 / 2 (eq. 5.75)
+  Matrix<T> q, q_dot, q_ddot;       // q_s = [theta; q_b] and derivatives, (n_b+1) x P
+  Matrix<T> torque;                 // u (N m), n_b x P, eq. (5.35)
+  Matrix<T> contact_force;          // F_1 = [F_1x; F_1z] (N), 2 x P, eq. (5.14)
+  Matrix<T> hip;                    // [x_H; z_H] (m), stance ankle at x_0 = 0
+  Matrix<T> swing_contact;          // [x_C2; z_C2] (m)
+  Vector<T> stance_foot_angle;      // theta_F1 (rad), feet only
+};
+
+template <class T>
+struct PeriodicGait {
+  bool real = false;           // a real periodic solution exists (eq. 5.87) and was reconstructed
+  std::string failure;         // why not, with where
+  int failure_point = -1;      // grid index where it failed (eq. 5.87), -1 if not point-specific
+  T objective{}, f_mech{}, f_usq{};
+  T speed_equality{};          // c_g (eq. 5.103)
+  Vector<T> inequalities;      // c_u <= 0 (eq. 5.104); forces scaled by m g, impulses by m (1 m/s)
+  T step_length{}, step_period{}, mean_speed{};
+  T floquet{};                 // Lambda (eq. 5.89)
+  T zeta_plus{};               // zeta+ (eq. 5.85)
+  T impact_energy_loss{};      // E_kin- - E_kin+ at the impact (J)
+  Vec2<T> impulse;             // F_hat_2 (N s)
+  T theta_plus{}, theta_minus{};
+  VirtualConstraints<T> constraints;
+  GaitTrajectory<T> trajectory;
+};
+
+namespace detail {
+
+// Integral of max(p, 0) over one interval with linear interpolation of a zero crossing (Fig. 5.3).
+template <class T>
+T positive_part_trapezoid(const T& p0, const T& p1, const T& dt) {
+  const double a = ad::value(p0), b = ad::value(p1);
+  if (a >= 0.0 && b >= 0.0) return 0.5 * (p0 + p1) * dt;
+  if (a <= 0.0 && b <= 0.0) return T(0.0);
+  const T frac = p0 / (p0 - p1);  // crossing at t0 + frac dt
+  return a > 0.0 ? T(0.5 * p0 * frac * dt) : T(0.5 * p1 * (1.0 - frac) * dt);
+}
+
+}  // namespace detail
+
+template <class T, class XVector>
+PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis, const XVector& x,
+                              const GaitOptions& opt) {
+  using std::exp, std::sqrt, std::abs;
+  constexpr double pi = std::numbers::pi;
+  const int nb = m.joint_count, nq = nb + 1, P = static_cast<int>(basis.s.size());
+  PeriodicGait<T> g;
+  g.constraints = virtual_constraints(m, x);
+  if (!g.constraints.ok) {
+    g.failure = g.constraints.failure;
+    return g;
+  }
+  const VirtualConstraints<T>& vc = g.constraints;
+  g.theta_plus = vc.theta_plus;
+  g.theta_minus = vc.theta_minus;
+  const T span = vc.theta_minus - vc.theta_plus, h = span / double(P - 1);
+  const Matrix<T> qb = vc.alpha * basis.value.cast<T>();
+  const Matrix<T> qb1 = (vc.alpha * basis.first.cast<T>()) / span;
+  const Matrix<T> qb2 = (vc.alpha * basis.second.cast<T>()) / (span * span);
+
+  // Zero-dynamics coefficients on the grid (eq. 5.73, 5.76).
+  std::vector<StanceFrame<T>> frames(P);
+  std::vector<ZeroDynamicsCoefficients<T>> zd(P);
+  Vector<T> theta(P), mu1(P), mu2(P);
+  CoordinateVector<T> q(nq), gamma(nq), gamma1(nq);
+  for (int i = 0; i < P; ++i) {
+    theta(i) = vc.theta_plus + h * double(i);
+    q(0) = theta(i);
+    q.tail(nb) = qb.col(i);
+    gamma(0) = T(1.0);
+    gamma.tail(nb) = qb1.col(i);
+    gamma1(0) = T(0.0);
+    gamma1.tail(nb) = qb2.col(i);
+    frames[i] = stance_frame(m, q);
+    zd[i] = zero_dynamics_coefficients(m, frames[i], gamma, gamma1);
+    if (!(ad::value(zd[i].a) > 0.0)) {
+      g.failure = "singular zero dynamics: e_1^T M_s gamma <= 0 at grid point " + std::to_string(i) + " (theta = " +
+                  std::to_string(ad::value(theta(i))) + " rad)";
+      g.failure_point = i;
+      return g;
+    }
+    mu1(i) = -2.0 * zd[i].nu3 / zd[i].nu1;
+    mu2(i) = zd[i].nu2 / zd[i].nu1;
+  }
+  // Cumulative trapezoid rule for iota (5.80, kept as its logarithm) and int mu2/iota (5.84).
+  Vector<T> log_iota(P), iota(P), I(P);
+  log_iota(0) = T(0.0);
+  iota(0) = T(1.0);
+  I(0) = T(0.0);
+  for (int i = 1; i < P; ++i) {
+    log_iota(i) = log_iota(i - 1) - 0.5 * h * (mu1(i - 1) + mu1(i));
+    iota(i) = exp(log_iota(i));
+    I(i) = I(i - 1) + 0.5 * h * (mu2(i - 1) / iota(i - 1) + mu2(i) / iota(i));
+  }
+  // Impact map of the zero dynamics (5.77) and the fixed point (5.85), Floquet multiplier (5.89).
+  const T delta_z = vc.theta_dot_ratio * zd[P - 1].nu1 / zd[0].nu1;
+  g.floquet = delta_z * delta_z * iota(P - 1);
+  if (std::abs(1.0 - ad::value(g.floquet)) < 1e-12) {
+    g.failure = "Floquet multiplier Lambda = 1: no isolated periodic orbit (eq. 5.85 singular)";
+    return g;
+  }
+  g.zeta_plus = g.floquet * I(P - 1) / (1.0 - g.floquet);
+  // Real-solution check (5.87): zeta+ + int mu2/iota > 0 on the whole step.
+  for (int i = 0; i < P; ++i)
+    if (!(ad::value(g.zeta_plus + I(i)) > 0.0)) {
+      g.failure = "no real solution: zeta <= 0 at grid point " + std::to_string(i) + " of " + std::to_string(P) +
+                  " (theta = " + std::to_string(ad::value(theta(i))) + " rad, zeta+ = " +
+                  std::to_string(ad::value(g.zeta_plus)) + "), eq. 5.87";
+      g.failure_point = i;
+      return g;
+    }
+
+  // States on the grid (5.84, 5.86 with sigma = sqrt(2 zeta), 5.95-5.97) and time (5.96).
+  GaitTrajectory<T>& tr = g.trajectory;
+  tr.theta = theta;
+  tr.zeta.resize(P);
+  tr.time.resize(P);
+  tr.q.resize(nq, P);
+  tr.q_dot.resize(nq, P);
+  tr.q_ddot.resize(nq, P);
+  tr.torque.resize(nb, P);
+  tr.contact_force.resize(2, P);
+  tr.hip.resize(2, P);
+  tr.swing_contact.resize(2, P);
+  tr.stance_foot_angle.resize(m.has_feet() ? P : 0);
+  Vector<T> theta_dot(P);
+  Vec2<T> swing_velocity_plus = Vec2<T>::Zero(), swing_velocity_minus = Vec2<T>::Zero();
+  for (int i = 0; i < P; ++i) {
+    tr.zeta(i) = iota(i) * (g.zeta_plus + I(i));
+    const T sigma = sqrt(2.0 * tr.zeta(i));  // eq. (5.86) prints 2 sqrt(zeta); zeta = sigma^2/2 (5.75) gives this
+    theta_dot(i) = zd[i].nu1 * sigma;
+    const T theta_ddot = -(zd[i].b * theta_dot(i) * theta_dot(i) + zd[i].c) / zd[i].a;
+    tr.q(0, i) = theta(i);
+    tr.q.col(i).tail(nb) = qb.col(i);
+    tr.q_dot(0, i) = theta_dot(i);
+    tr.q_dot.col(i).tail(nb) = qb1.col(i) * theta_dot(i);
+    tr.q_ddot(0, i) = theta_ddot;
+    tr.q_ddot.col(i).tail(nb) = qb1.col(i) * theta_ddot + qb2.col(i) * (theta_dot(i) * theta_dot(i));
+    const CoordinateVector<T> qd = tr.q_dot.col(i), qdd = tr.q_ddot.col(i);
+    tr.torque.col(i) = generalized_forces(m, frames[i], qd, qdd).tail(nb);
+    tr.contact_force.col(i) = stance_contact_force(m, frames[i], qd, qdd);
+    tr.hip.col(i) = point_position(frames[i], m.hip);
+    tr.swing_contact.col(i) = swing_contact_point(m, frames[i]);
+    if (m.has_feet()) tr.stance_foot_angle(i) = frames[i].angle(seg_F1);
+    if (i == 0) swing_velocity_plus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
+    if (i == P - 1) swing_velocity_minus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
+  }
+  tr.time(0) = T(0.0);
+  for (int i = 1; i < P; ++i) tr.time(i) = tr.time(i - 1) + 0.5 * h * (1.0 / theta_dot(i - 1) + 1.0 / theta_dot(i));
+
+  // Step, speed, impact (the unit impact scales linearly with theta_dot-).
+  g.step_length = tr.hip(0, P - 1) - tr.hip(0, 0);
+  g.step_period = tr.time(P - 1);
+  g.mean_speed = g.step_length / g.step_period;
+  g.speed_equality = g.mean_speed - T(opt.speed);
+  const T td_minus = theta_dot(P - 1);
+  g.impulse = vc.unit_impact.impulse * td_minus;
+  g.impact_energy_loss = (vc.unit_impact.kinetic_energy_minus - vc.unit_impact.kinetic_energy_plus) * td_minus * td_minus;
+
+  // Energy per step (5.98-5.102): trapezoid in time with zero-crossing correction for f_mech.
+  const T weight_step = m.total_mass * T(m.constants.gravity) * g.step_length;
+  T e_mech = T(0.0), e_usq = T(0.0);
+  for (int j = 0; j < nb; ++j)
+    for (int i = 0; i + 1 < P; ++i) {
+      const T dt = tr.time(i + 1) - tr.time(i);
+      const T p0 = tr.torque(j, i) * tr.q_dot(1 + j, i), p1 = tr.torque(j, i + 1) * tr.q_dot(1 + j, i + 1);
+      e_mech += detail::positive_part_trapezoid(p0, p1, dt);
+      e_usq += 0.5 * T(m.constants.actuator_constant) * (tr.torque(j, i) * tr.torque(j, i) + tr.torque(j, i + 1) * tr.torque(j, i + 1)) * dt;
+    }
+  g.f_mech = e_mech / weight_step;
+  g.f_usq = e_usq / weight_step;
+  g.objective = opt.objective == Objective::mechanical ? g.f_mech : g.f_usq;
+
+  // Inequalities (5.104). Forces are divided by the weight m g and impulses by m * (1 m/s) so all
+  // entries are O(1); the feasible set is the seed's.
+  const InequalityLayout L{P};
+  const T mu = T(m.constants.friction), W = m.total_mass * T(m.constants.gravity), Wi = m.total_mass;
+  Vector<T>& c = g.inequalities;
+  c.resize(L.size());
+  c(0) = -g.impulse.y() / Wi;                               // (a)
+  c(1) = (-g.impulse.x() - mu * g.impulse.y()) / Wi;         // (b)
+  c(2) = (g.impulse.x() - mu * g.impulse.y()) / Wi;
+  for (int i = 0; i < P; ++i) {
+    const T Fx = tr.contact_force(0, i) / W, Fz = tr.contact_force(1, i) / W;
+    c(L.normal_force() + i) = -Fz;                           // (c)
+    c(L.friction() + 2 * i) = -Fx - mu * Fz;                 // (d)
+    c(L.friction() + 2 * i + 1) = Fx - mu * Fz;
+    c(L.knee_lower() + 2 * i) = -tr.q(1 + joint_K1, i);      // (f)
+    c(L.knee_lower() + 2 * i + 1) = -tr.q(1 + joint_K2, i);
+    c(L.knee_upper() + 2 * i) = tr.q(1 + joint_K1, i) - 2.0 * pi / 3.0;  // (g)
+    c(L.knee_upper() + 2 * i + 1) = tr.q(1 + joint_K2, i) - 2.0 * pi / 3.0;
+    const T theta_T = torso_angle<T>(CoordinateVector<T>(tr.q.col(i)));
+    c(L.torso() + 2 * i) = theta_T - pi / 2.0;               // (h); the seed prints "1/2 pi - theta_T",
+    c(L.torso() + 2 * i + 1) = -pi / 2.0 - theta_T;          // its own text asks for -pi/2 <= theta_T
+  }
+  c(L.swing_clearance()) = -swing_velocity_plus.y();        // (e)
+  c(L.swing_clearance() + 1) = swing_velocity_minus.y();
+  for (int i = 1; i + 1 < P; ++i) c(L.swing_clearance() + 1 + i) = -tr.swing_contact(1, i);
+  g.real = true;
+  if (!opt.keep_trajectories) g.trajectory = {};
+  return g;
+}
+
+}  // namespace cyclopt::walker

@@ -1,0 +1,101 @@
+#pragma once
+// Kinematics of the single-support phase (seed 001 section 5.1.3) in slot form (walker_model.hpp):
+// at a configuration q_s = [theta; q_b] every slot s has a velocity direction w_s and its
+// derivative w'_s with respect to the slot angle:
+//   segment j:     w = d e/d phi = [cos phi; -sin phi],  w' = -e(phi)
+//   rolling ankle: w = r'_A1 = [F'_A; F''_A],            w' = [F''_A; F'''_A]      (eq. 5.10)
+// so that every point velocity is sum_s L_s w_s u_s with slot rates u = slot_map * q_s_dot.
+
+#include "cyclopt/walker/walker_model.hpp"
+
+#include "cyclopt/foot/rolling_kinematics.hpp"
+
+#include <cmath>
+
+namespace cyclopt::walker {
+
+template <class T>
+using Vec2 = Eigen::Matrix<T, 2, 1>;
+
+template <class T>
+struct StanceFrame {
+  SlotVector<T> angle;  // slot angles phi_s
+  Eigen::Matrix<T, 2, kMaxSlots> w;   // columns w_s
+  Eigen::Matrix<T, 2, kMaxSlots> dw;  // columns w'_s
+  foot::RollingContact<T> stance_foot{};  // F_A and derivatives at theta_F1 (feet only)
+  foot::RollingContact<T> swing_foot{};   // at theta_F2 (feet only)
+  Vec2<T> stance_ankle;                   // r_A1 = [F_A; F'_A] (x_0 = 0), or 0 for point feet
+};
+
+// e(phi) = [sin phi; cos phi]: direction of a segment at absolute angle phi.
+template <class T>
+Vec2<T> direction(const T& phi) {
+  using std::cos, std::sin;
+  return Vec2<T>(sin(phi), cos(phi));
+}
+
+// F_A(theta_F) = F(theta_F - theta_F,0) of the model's foot (eq. 5.4).
+template <class T>
+foot::RollingContact<T> foot_contact(const WalkerModel<T>& m, const T& theta_F) {
+  return foot::rolling_contact(m.foot, T(theta_F - m.foot_zero_angle));
+}
+
+template <class T>
+StanceFrame<T> stance_frame(const WalkerModel<T>& m, const CoordinateVector<T>& q) {
+  using std::cos, std::sin;
+  StanceFrame<T> f;
+  f.angle = m.slot_map.template cast<T>() * q;
+  for (int s = 0; s < m.segment_count; ++s) {
+    const T c = cos(f.angle(s)), sn = sin(f.angle(s));
+    f.w.col(s) << c, -sn;
+    f.dw.col(s) << -sn, -c;
+  }
+  f.stance_ankle.setZero();
+  if (m.has_feet()) {
+    f.stance_foot = foot_contact(m, f.angle(seg_F1));
+    f.swing_foot = foot_contact(m, f.angle(seg_F2));
+    const int r = m.rolling_slot();
+    f.w.col(r) << f.stance_foot.dF, f.stance_foot.ddF;
+    f.dw.col(r) << f.stance_foot.ddF, f.stance_foot.dddF;
+    f.stance_ankle << f.stance_foot.F, f.stance_foot.dF;
+  }
+  return f;
+}
+
+// Position of a point given by its segment offsets from the stance ankle.
+template <class T>
+Vec2<T> point_position(const StanceFrame<T>& f, const SegmentOffsets<T>& offsets) {
+  Vec2<T> r = f.stance_ankle;
+  for (int s = 0; s < offsets.size(); ++s) r += offsets(s) * direction(f.angle(s));
+  return r;
+}
+
+// Velocity of that point for slot rates u (the rolling slot carries the ankle's own motion).
+template <class T>
+Vec2<T> point_velocity(const WalkerModel<T>& m, const StanceFrame<T>& f, const SegmentOffsets<T>& offsets,
+                       const SlotVector<T>& u) {
+  Vec2<T> v = Vec2<T>::Zero();
+  for (int s = 0; s < offsets.size(); ++s) v += offsets(s) * f.w.col(s) * u(s);
+  if (m.has_feet()) v += f.w.col(m.rolling_slot()) * u(m.rolling_slot());
+  return v;
+}
+
+// Potential contact point of the swing foot, C2 = A2 + F''_A e_x - F'_A e_z (eq. 5.5); for
+// point feet the swing ankle itself.
+template <class T>
+Vec2<T> swing_contact_point(const WalkerModel<T>& m, const StanceFrame<T>& f) {
+  Vec2<T> c = point_position(f, m.swing_ankle);
+  if (m.has_feet()) c += Vec2<T>(f.swing_foot.ddF, -f.swing_foot.dF);
+  return c;
+}
+
+// Its velocity: the swing ankle's velocity minus theta_F2_dot [F'_A; F''_A] (a material point of
+// the rigid foot; equal to the rate of the lowest point because the sole is convex).
+template <class T>
+Vec2<T> swing_contact_velocity(const WalkerModel<T>& m, const StanceFrame<T>& f, const SlotVector<T>& u) {
+  Vec2<T> v = point_velocity(m, f, m.swing_ankle, u);
+  if (m.has_feet()) v -= u(seg_F2) * Vec2<T>(f.swing_foot.dF, f.swing_foot.ddF);
+  return v;
+}
+
+}  // namespace cyclopt::walker
