@@ -19,6 +19,13 @@ double value(const std::complex<T>& x) { return value(x.real()); }
 template <class T>
 T constant(double x) { return T(x); }
 
+// Bilinear dot product sum a_i b_i. Eigen's dot() conjugates complex arguments, which would break
+// complex-step differentiation; templated model code uses this instead.
+template <class A, class B>
+auto dot(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
+  return a.cwiseProduct(b).sum();
+}
+
 // atan2 for complex arguments, holomorphic in a neighbourhood of real (y, x) off the branch cut:
 // atan(y/x) plus the quadrant correction chosen from the real parts (or pi/2 - atan(x/y) near x = 0).
 template <class T>

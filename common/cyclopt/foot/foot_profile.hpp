@@ -146,6 +146,7 @@ T curvature_radius_term(const Transition<S>& tr, const T& a) {
 template <class S>
 FootProfile<S> make_profile(FootModel model, const FootParameters<S>& p, int periodic_terms = 0) {
   using std::atan2, std::cos, std::sin, std::sqrt;
+  using ad::atan2;
   constexpr double pi = std::numbers::pi;
   FootProfile<S> prof;
   prof.model = model;

@@ -81,7 +81,7 @@ ImpactResult<T> impact_map(const WalkerModel<T>& m, const CoordinateVector<T>& q
       if (s < 2 && t < 2) g = m.total_mass;
       else if (s < 2) g = m.first_moment(t - 2);
       else g = m.gram(s - 2, t - 2);
-      D(s, t) = D(t, s) = g * W.col(s).dot(W.col(t));
+      D(s, t) = D(t, s) = g * ad::dot(W.col(s), W.col(t));
     }
   for (int s = 0; s < ns; ++s) D(2 + s, 2 + s) += m.inertia(s);
   const Mat Mf = Sf.transpose() * D * Sf;
@@ -95,7 +95,7 @@ ImpactResult<T> impact_map(const WalkerModel<T>& m, const CoordinateVector<T>& q
   // Pre-impact free velocities (eq. 5.22): stance ankle rolls, theta_T_dot from eq. (5.48).
   Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxCoordinates + 2, 1> qf_dot(nf);
   qf_dot.setZero();
-  if (m.has_feet()) qf_dot.head(2) = f.w.col(m.rolling_slot()) * (m.slot_map.row(seg_F1).template cast<T>().dot(q_dot_minus));
+  if (m.has_feet()) qf_dot.head(2) = f.w.col(m.rolling_slot()) * ad::dot(m.slot_map.row(seg_F1).template cast<T>().transpose(), q_dot_minus);
   qf_dot(2) = torso_angle(q_dot_minus);
   qf_dot.tail(nb) = q_dot_minus.tail(nb);
   // KKT system (eq. 5.26).
@@ -109,9 +109,9 @@ ImpactResult<T> impact_map(const WalkerModel<T>& m, const CoordinateVector<T>& q
   const auto sol = K.partialPivLu().solve(rhs).eval();
   ImpactResult<T> r;
   r.impulse = sol.segment(nf, 2);
-  r.kinetic_energy_minus = 0.5 * qf_dot.dot(Mf * qf_dot);
+  r.kinetic_energy_minus = 0.5 * ad::dot(qf_dot, Mf * qf_dot);
   const auto qf_plus = sol.head(nf).eval();
-  r.kinetic_energy_plus = 0.5 * qf_plus.dot(Mf * qf_plus);
+  r.kinetic_energy_plus = 0.5 * ad::dot(qf_plus, Mf * qf_plus);
   // Swap legs (eq. 5.41) and go back to theta (eq. 5.43).
   r.q_plus = swap_configuration(q_minus);
   r.q_dot_plus.resize(nb + 1);

@@ -43,7 +43,7 @@ SlotVector<T> slot_forces(const WalkerModel<T>& m, const StanceFrame<T>& f, cons
   A.leftCols(n) = a.leftCols(n) * m.gram;
   SlotVector<T> Q(n);
   const T g = T(m.constants.gravity);
-  for (int s = 0; s < n; ++s) Q(s) = f.w.col(s).dot(A.col(s)) + m.inertia(s) * u_dot(s) + g * m.first_moment(s) * f.w(1, s);
+  for (int s = 0; s < n; ++s) Q(s) = ad::dot(f.w.col(s), A.col(s)) + m.inertia(s) * u_dot(s) + g * m.first_moment(s) * f.w(1, s);
   return Q;
 }
 
@@ -62,7 +62,7 @@ CoordinateMatrix<T> mass_matrix(const WalkerModel<T>& m, const StanceFrame<T>& f
   const int n = m.slot_count;
   SlotMatrix<T> D(n, n);
   for (int s = 0; s < n; ++s)
-    for (int t = s; t < n; ++t) D(s, t) = D(t, s) = m.gram(s, t) * f.w.col(s).dot(f.w.col(t));
+    for (int t = s; t < n; ++t) D(s, t) = D(t, s) = m.gram(s, t) * ad::dot(f.w.col(s), f.w.col(t));
   for (int s = 0; s < n; ++s) D(s, s) += m.inertia(s);
   const auto S = m.slot_map.template cast<T>();
   return S.transpose() * D * S;
@@ -82,7 +82,7 @@ Vec2<T> stance_contact_force(const WalkerModel<T>& m, const StanceFrame<T>& f, c
 // Kinetic and potential energy at (q, q_dot).
 template <class T>
 T kinetic_energy(const WalkerModel<T>& m, const StanceFrame<T>& f, const CoordinateVector<T>& q_dot) {
-  return 0.5 * q_dot.dot(mass_matrix(m, f) * q_dot);
+  return 0.5 * ad::dot(q_dot, mass_matrix(m, f) * q_dot);
 }
 
 // E_pot = g sum_b m_b z_b with z_b = z_A1 + sum_j L_bj cos phi_j.
@@ -120,10 +120,10 @@ ZeroDynamicsCoefficients<T> zero_dynamics_coefficients(const WalkerModel<T>& m, 
   T a = T(0.0), b = T(0.0), c = T(0.0), dT = T(0.0);
   const T g = T(m.constants.gravity);
   for (int s = 0; s < n; ++s) {
-    a += f.w.col(s).dot(P.col(s)) + m.inertia(s) * u(s);
-    b += f.w.col(s).dot(A2.col(s)) + m.inertia(s) * u2(s);
+    a += ad::dot(f.w.col(s), P.col(s)) + m.inertia(s) * u(s);
+    b += ad::dot(f.w.col(s), A2.col(s)) + m.inertia(s) * u2(s);
     c += g * m.first_moment(s) * f.w(1, s);
-    dT += u(s) * f.dw.col(s).dot(P.col(s));  // d E_kin / d theta per theta_dot^2
+    dT += u(s) * ad::dot(f.dw.col(s), P.col(s));  // d E_kin / d theta per theta_dot^2
   }
   z.a = a;
   z.b = b;

@@ -102,7 +102,7 @@ VirtualConstraints<T> virtual_constraints(const WalkerModel<T>& m, const Vector&
   // eq. (5.58)-(5.62): alpha_1 from the velocity impact map.
   CoordinateVector<T> gamma_minus(nb + 1);
   gamma_minus(0) = T(1.0);
-  gamma_minus.tail(nb) = (M / span) * (vc.alpha.col(M) - vc.alpha.col(M - 1));
+  gamma_minus.tail(nb) = (double(M) / span) * (vc.alpha.col(M) - vc.alpha.col(M - 1));
   vc.unit_impact = impact_map(m, vc.q_minus, gamma_minus);
   const CoordinateVector<T>& ups = vc.unit_impact.q_dot_plus;  // Upsilon (eq. 5.60)
   vc.theta_dot_ratio = ups(0);
@@ -111,7 +111,7 @@ VirtualConstraints<T> virtual_constraints(const WalkerModel<T>& m, const Vector&
     vc.failure = "impact reverses or stops the phase variable (theta_dot+ / theta_dot- <= 0, eq. 5.61)";
     return vc;
   }
-  vc.alpha.col(1) = vc.alpha.col(0) + (span / M) * ups.tail(nb) / ups(0);  // (5.62)
+  vc.alpha.col(1) = vc.alpha.col(0) + (span / double(M)) * ups.tail(nb) / ups(0);  // (5.62)
   return vc;
 }
 

@@ -1,0 +1,125 @@
+// The semi-analytic periodic gait (seed 001 eq. 5.76-5.97) against an independent time-domain
+// simulation of the full closed-loop model (forward_simulation.hpp): return to the same post-impact
+// state, step period, cost of transport, Floquet multiplier as the slope of the Poincare map, and
+// the energy balance of a step.
+#include "reference_gaits.hpp"
+
+#include "cyclopt/walker/forward_simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace cyclopt::walker {
+namespace {
+
+using testing::kReferenceFeet;
+
+constexpr int kFinePoints = 12800;
+
+struct FineGait {
+  WalkerModel<double> model;
+  PeriodicGait<double> gait;
+};
+
+// The reference starting gait re-evaluated on a fine grid, where the quadrature error is ~1e-8.
+FineGait fine_gait(const char* foot) {
+  const auto& ref = testing::reference_gait(foot);
+  EXPECT_TRUE(ref.start.feasible) << foot << ": " << ref.start.message;
+  FineGait f{testing::reference_model(foot, kFinePoints), {}};
+  f.gait = GaitEvaluator(f.model).evaluate(ref.start.x, GaitOptions{Objective::mechanical, 1.3, true});
+  EXPECT_TRUE(f.gait.real) << f.gait.failure;
+  return f;
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+TEST(PeriodicGait, ForwardSimulationReturnsToTheSamePostImpactState) {
+  for (const char* foot : kReferenceFeet) {
+    const FineGait f = fine_gait(foot);
+    const auto& tr = f.gait.trajectory;
+    const Eigen::VectorXd q0 = tr.q.col(0), qd0 = tr.q_dot.col(0);
+    const StepSimulation s = simulate_step(f.model, f.gait.constraints, q0, qd0, SimulationOptions{});
+    ASSERT_TRUE(s.landed) << foot << ": " << s.failure;
+    const double dq = (s.q_plus - q0).norm() / q0.norm(), dqd = (s.q_dot_plus - qd0).norm() / qd0.norm();
+    const double W = f.model.total_mass * f.model.constants.gravity * s.step_length;
+    std::printf("%s (P = %d): post-impact q %.2e, q_dot %.2e rel.; period %.10f vs %.10f s; f_mech %.10f vs %.10f; "
+                "%d steps, %d rhs calls\n", foot, kFinePoints, dq, dqd, s.step_period, f.gait.step_period,
+                s.mechanical_energy / W, f.gait.f_mech, s.integration.steps, s.integration.evaluations);
+    EXPECT_LE(dq, 1e-6) << foot;
+    EXPECT_LE(dqd, 1e-6) << foot;
+    EXPECT_LE(relative(s.step_period, f.gait.step_period), 1e-6) << foot;
+    EXPECT_LE(relative(s.step_length, f.gait.step_length), 1e-9) << foot;
+    EXPECT_LE(relative(s.mechanical_energy / W, f.gait.f_mech), 1e-6) << foot;
+    EXPECT_LE(relative(s.squared_torque / W, f.gait.f_usq), 1e-6) << foot;
+  }
+}
+
+// zeta = sigma^2 / 2 with sigma = dL/d theta_dot = (M_s q_dot)_0 (eq. 5.37, 5.75).
+double zeta(const WalkerModel<double>& m, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+  const StanceFrame<double> f = stance_frame(m, CoordinateVector<double>(q));
+  const double sigma = (mass_matrix(m, f) * qd)(0);
+  return 0.5 * sigma * sigma;
+}
+
+TEST(PeriodicGait, FloquetMultiplierIsTheSlopeOfTheSimulatedPoincareMap) {
+  for (const char* foot : kReferenceFeet) {
+    const FineGait f = fine_gait(foot);
+    const auto& tr = f.gait.trajectory;
+    const Eigen::VectorXd q0 = tr.q.col(0), qd0 = tr.q_dot.col(0);
+    const double z0 = zeta(f.model, q0, qd0), eps = 1e-3;
+    double z_next[2];
+    for (int k = 0; k < 2; ++k) {
+      const double scale = std::sqrt(1.0 + (k == 0 ? eps : -eps));  // zeta+ -> zeta+ (1 +- eps), on the manifold
+      const StepSimulation s = simulate_step(f.model, f.gait.constraints, q0, scale * qd0, SimulationOptions{});
+      ASSERT_TRUE(s.landed) << foot << ": " << s.failure;
+      z_next[k] = zeta(f.model, s.q_plus, s.q_dot_plus);
+    }
+    const double slope = (z_next[0] - z_next[1]) / (2.0 * eps * z0);
+    std::printf("%s: Poincare slope from simulation %.8f, Lambda (5.89) %.8f\n", foot, slope, f.gait.floquet);
+    EXPECT_NEAR(slope, f.gait.floquet, 1e-5 * std::abs(f.gait.floquet)) << foot;
+  }
+}
+
+TEST(PeriodicGait, ActuatorWorkOverAStepEqualsTheImpactLoss) {
+  for (const char* foot : kReferenceFeet) {
+    const FineGait f = fine_gait(foot);
+    const auto& tr = f.gait.trajectory;
+    // Signed actuator work of the semi-analytic gait, trapezoid in time over the grid.
+    // The scale is the gross work int sum |u_i q_b_dot_i| dt, of which the net work is a small difference.
+    double work = 0.0, gross = 0.0;
+    const int nb = f.model.joint_count;
+    for (int i = 0; i + 1 < tr.time.size(); ++i) {
+      const Eigen::ArrayXd p0 = tr.torque.col(i).array() * tr.q_dot.col(i).tail(nb).array();
+      const Eigen::ArrayXd p1 = tr.torque.col(i + 1).array() * tr.q_dot.col(i + 1).tail(nb).array();
+      const double dt = tr.time(i + 1) - tr.time(i);
+      work += 0.5 * (p0.sum() + p1.sum()) * dt;
+      gross += 0.5 * (p0.abs().sum() + p1.abs().sum()) * dt;
+    }
+    const StepSimulation s = simulate_step(f.model, f.gait.constraints, tr.q.col(0), tr.q_dot.col(0), SimulationOptions{});
+    ASSERT_TRUE(s.landed) << foot;
+    std::printf("%s: work %.9f J (semi-analytic), %.9f J (simulated), impact loss %.9f J, gross work %.3f J; "
+                "simulated W - dE = %.2e J\n", foot, work, s.actuator_work, f.gait.impact_energy_loss, gross,
+                s.actuator_work - s.energy_change);
+    EXPECT_LE(std::abs(work - f.gait.impact_energy_loss), 1e-6 * gross) << foot;
+    EXPECT_LE(std::abs(s.actuator_work - s.impact_energy_loss), 1e-6 * gross) << foot;
+    EXPECT_LE(std::abs(s.actuator_work - s.energy_change), 1e-8 * gross) << foot;
+  }
+}
+
+TEST(PeriodicGait, QuadratureErrorFallsWithTheSquareOfTheGridSpacing) {
+  const auto& ref = testing::reference_gait("P1-barefoot-left-HM");
+  const GaitOptions opt{Objective::mechanical, 1.3, false};
+  const double T_fine = GaitEvaluator(testing::reference_model("P1-barefoot-left-HM", 4 * kFinePoints))
+                            .evaluate(ref.start.x, opt).step_period;
+  double err[2];
+  int k = 0;
+  for (int P : {400, 1600}) err[k++] = std::abs(GaitEvaluator(testing::reference_model("P1-barefoot-left-HM", P))
+                                                    .evaluate(ref.start.x, opt).step_period - T_fine);
+  std::printf("period error P=400: %.3e, P=1600: %.3e (ratio %.1f, trapezoid rule: 16)\n", err[0], err[1], err[0] / err[1]);
+  EXPECT_GT(err[0] / err[1], 12.0);
+  EXPECT_LT(err[0] / err[1], 20.0);
+}
+
+}  // namespace
+}  // namespace cyclopt::walker
