@@ -74,8 +74,10 @@ WalkerModel<T> make_walker_model(const SegmentParameters<T>& p, foot::FootModel 
     SlotVector<T> Lb = SlotVector<T>::Zero(m.slot_count);
     Lb.head(ns) = L.row(b).transpose();
     if (feet) Lb(ns) = T(1.0);
-    m.gram += mass(b) * Lb * Lb.transpose();
-    m.first_moment += mass(b) * Lb;
+    for (int s = 0; s < m.slot_count; ++s) {
+      m.first_moment(s) += mass(b) * Lb(s);
+      for (int t = 0; t < m.slot_count; ++t) m.gram(s, t) += mass(b) * Lb(s) * Lb(t);
+    }
   }
   m.inertia = inertia;
 
