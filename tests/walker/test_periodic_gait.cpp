@@ -123,3 +123,38 @@ TEST(PeriodicGait, QuadratureErrorFallsWithTheSquareOfTheGridSpacing) {
 
 }  // namespace
 }  // namespace cyclopt::walker
+
+namespace cyclopt::walker {
+namespace {
+
+TEST(Quadrature, CorrectedTrapezoidIsFourthOrderOnEveryRunningIntegral) {
+  double err[2];
+  int k = 0;
+  for (int P : {101, 201}) {
+    const double h = 2.0 / (P - 1);
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(P, 0.0, 2.0);
+    const Eigen::VectorXd I = cumulative_integral(Eigen::VectorXd(x.array().exp()), h, Quadrature::corrected_trapezoid);
+    err[k++] = (I.array() - (x.array().exp() - 1.0)).abs().maxCoeff();
+  }
+  std::printf("corrected trapezoid on exp: max error %.2e (P=101), %.2e (P=201), ratio %.1f\n", err[0], err[1],
+              err[0] / err[1]);
+  EXPECT_GT(err[0] / err[1], 14.0);
+  EXPECT_LT(err[1], 5e-9);
+}
+
+TEST(Quadrature, CorrectedRuleConvergesFasterOnTheGait) {
+  const auto& ref = testing::reference_gait("P2-shoes-left-HMT");
+  GaitOptions opt{Objective::mechanical, 1.3, false};
+  opt.quadrature = Quadrature::corrected_trapezoid;
+  const PeriodicGait<double> fine = GaitEvaluator(testing::reference_model("P2-shoes-left-HMT", 25600)).evaluate(ref.start.x, opt);
+  const GaitEvaluator ev(testing::reference_model("P2-shoes-left-HMT", 1600));
+  const PeriodicGait<double> corrected = ev.evaluate(ref.start.x, opt);
+  opt.quadrature = Quadrature::trapezoid;
+  const PeriodicGait<double> trapezoid = ev.evaluate(ref.start.x, opt);
+  const double e_c = std::abs(corrected.floquet - fine.floquet), e_t = std::abs(trapezoid.floquet - fine.floquet);
+  std::printf("Lambda error at P = 1600: trapezoid %.2e, corrected %.2e\n", e_t, e_c);
+  EXPECT_LT(e_c, 1e-2 * e_t);
+}
+
+}  // namespace
+}  // namespace cyclopt::walker

@@ -9,6 +9,7 @@
 // the gait parameters x and/or model parameters, std::complex<double> for complex-step checks.
 
 #include "cyclopt/walker/bezier_basis.hpp"
+#include "cyclopt/walker/quadrature.hpp"
 #include "cyclopt/walker/virtual_constraints.hpp"
 
 #include <cmath>
@@ -24,6 +25,7 @@ struct GaitOptions {
   Objective objective = Objective::mechanical;
   double speed = 1.3;             // target mean speed v_bar (m/s), eq. (5.103)
   bool keep_trajectories = true;  // fill PeriodicGait::trajectory
+  Quadrature quadrature = Quadrature::trapezoid;  // for iota, int mu2/iota, time and f_usq (5.80-5.96)
 };
 
 // Indices into the inequality vector (eq. 5.104) for a given P.
@@ -133,16 +135,14 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
     mu1(i) = -2.0 * zd[i].nu3 / zd[i].nu1;
     mu2(i) = zd[i].nu2 / zd[i].nu1;
   }
-  // Cumulative trapezoid rule for iota (5.80, kept as its logarithm) and int mu2/iota (5.84).
-  Vector<T> log_iota(P), iota(P), I(P);
-  log_iota(0) = T(0.0);
-  iota(0) = T(1.0);
-  I(0) = T(0.0);
-  for (int i = 1; i < P; ++i) {
-    log_iota(i) = log_iota(i - 1) - 0.5 * h * (mu1(i - 1) + mu1(i));
+  // Cumulative quadrature for iota (5.80, kept as its logarithm) and int mu2/iota (5.84).
+  const Vector<T> log_iota = -cumulative_integral(mu1, h, opt.quadrature);
+  Vector<T> iota(P), mu2_over_iota(P);
+  for (int i = 0; i < P; ++i) {
     iota(i) = exp(log_iota(i));
-    I(i) = I(i - 1) + 0.5 * h * (mu2(i - 1) / iota(i - 1) + mu2(i) / iota(i));
+    mu2_over_iota(i) = mu2(i) / iota(i);
   }
+  const Vector<T> I = cumulative_integral(mu2_over_iota, h, opt.quadrature);
   // Impact map of the zero dynamics (5.77) and the fixed point (5.85), Floquet multiplier (5.89).
   const T delta_z = vc.theta_dot_ratio * zd[P - 1].nu1 / zd[0].nu1;
   g.floquet = delta_z * delta_z * iota(P - 1);
@@ -196,8 +196,7 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
     if (i == 0) swing_velocity_plus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
     if (i == P - 1) swing_velocity_minus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
   }
-  tr.time(0) = T(0.0);
-  for (int i = 1; i < P; ++i) tr.time(i) = tr.time(i - 1) + 0.5 * h * (1.0 / theta_dot(i - 1) + 1.0 / theta_dot(i));
+  tr.time = cumulative_integral(Vector<T>(theta_dot.cwiseInverse()), h, opt.quadrature);  // (5.96)
 
   // Step, speed, impact (the unit impact scales linearly with theta_dot-).
   g.step_length = tr.hip(0, P - 1) - tr.hip(0, 0);
@@ -208,16 +207,24 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
   g.impulse = vc.unit_impact.impulse * td_minus;
   g.impact_energy_loss = (vc.unit_impact.kinetic_energy_minus - vc.unit_impact.kinetic_energy_plus) * td_minus * td_minus;
 
-  // Energy per step (5.98-5.102): trapezoid in time with zero-crossing correction for f_mech.
+  // Energy per step (5.98-5.102): trapezoid in time with zero-crossing correction for f_mech; f_usq
+  // by the trapezoid rule in time (the seed's) or the corrected rule in theta (dt = d theta / theta_dot).
   const T weight_step = m.total_mass * T(m.constants.gravity) * g.step_length;
+  const T c_A = T(m.constants.actuator_constant);
   T e_mech = T(0.0), e_usq = T(0.0);
   for (int j = 0; j < nb; ++j)
     for (int i = 0; i + 1 < P; ++i) {
       const T dt = tr.time(i + 1) - tr.time(i);
       const T p0 = tr.torque(j, i) * tr.q_dot(1 + j, i), p1 = tr.torque(j, i + 1) * tr.q_dot(1 + j, i + 1);
       e_mech += detail::positive_part_trapezoid(p0, p1, dt);
-      e_usq += 0.5 * T(m.constants.actuator_constant) * (tr.torque(j, i) * tr.torque(j, i) + tr.torque(j, i + 1) * tr.torque(j, i + 1)) * dt;
+      if (opt.quadrature == Quadrature::trapezoid)
+        e_usq += 0.5 * c_A * (tr.torque(j, i) * tr.torque(j, i) + tr.torque(j, i + 1) * tr.torque(j, i + 1)) * dt;
     }
+  if (opt.quadrature == Quadrature::corrected_trapezoid) {
+    Vector<T> usq_per_theta(P);
+    for (int i = 0; i < P; ++i) usq_per_theta(i) = c_A * ad::dot(tr.torque.col(i), tr.torque.col(i)) / theta_dot(i);
+    e_usq = cumulative_integral(usq_per_theta, h, opt.quadrature)(P - 1);
+  }
   g.f_mech = e_mech / weight_step;
   g.f_usq = e_usq / weight_step;
   g.objective = opt.objective == Objective::mechanical ? g.f_mech : g.f_usq;
