@@ -6,6 +6,7 @@
 
 #include "cyclopt_channels.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 
@@ -53,7 +54,7 @@ bool ServiceClient::pump_until(const std::function<bool()>& done, double s) {
   while (!done()) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) return false;
-    lcm_.handleTimeout(static_cast<int>(std::min<long long>(left, 50)));
+    lcm_.handleTimeout(static_cast<int>(std::clamp<long long>(left, 1, 50)));
   }
   return true;
 }
@@ -75,10 +76,10 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::submit(const std::string& r
   const auto deadline = Clock::now() + seconds(timeout_seconds);
   awaiting_.insert(request_id);
   std::optional<cyclopt_lcm::job_ack_t> ack;
-  while (!ack && Clock::now() < deadline) {
+  // Each round publishes once and then waits a full retry interval (or what is left).
+  for (auto left = deadline - Clock::now(); !ack && left > std::chrono::milliseconds(1); left = deadline - Clock::now()) {
     lcm_.publish(channels::kSubmit, &msg);
-    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-    ack = await(acks_, request_id, std::min(retry_seconds, left));
+    ack = await(acks_, request_id, std::min(retry_seconds, std::chrono::duration<double>(left).count()));
   }
   awaiting_.erase(request_id);
   return ack;

@@ -17,6 +17,9 @@ namespace cyclopt::server {
 
 namespace {
 
+// A too-long request id is still echoed (up to this length) so its sender sees the rejection.
+constexpr std::size_t kMaxEchoedRequestIdBytes = 1024;
+
 // Decodes a message of type T, or returns false.
 template <class T>
 bool decode(const lcm::ReceiveBuffer* rbuf, T& msg) {
@@ -54,7 +57,7 @@ void RequestHandler::subscribe(lcm::LCM& lcm) {
 void RequestHandler::reject(const std::string& request_id, const std::string& field, const std::string& problem) {
   ++counters_.rejected;
   cyclopt_lcm::job_ack_t ack;
-  ack.request_id = request_id.substr(0, channels::kMaxRequestIdBytes);
+  ack.request_id = request_id.substr(0, kMaxEchoedRequestIdBytes);
   ack.accepted = false;
   ack.job_id = -1;
   ack.duplicate = false;
@@ -121,7 +124,7 @@ void RequestHandler::on_query(const lcm::ReceiveBuffer* rbuf, const std::string&
   if (!decode(rbuf, msg)) return reject("", channel, undecodable(channel, rbuf, "query_request_t"));
   ++counters_.queries;
   cyclopt_lcm::query_reply_t reply;
-  reply.request_id = msg.request_id.substr(0, channels::kMaxRequestIdBytes);
+  reply.request_id = msg.request_id.substr(0, kMaxEchoedRequestIdBytes);
   reply.offset = msg.offset;
   reply.row_count = 0;
   reply.total = 0;
