@@ -23,8 +23,9 @@ directly (read-only) when given --db FILE.
   submit --spec FILE.json [--request-id ID] [--watch]
   submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI [--point-delay-ms N]
          [--name TEXT] [--request-id ID] [--watch]
-                     queue a job (proto/schemas/job.schema.json); flags build a foot_sweep
-                     spec. Resent every 0.5 s until the server answers (same request id, so
+  submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
+                     queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
+                     spec, --speeds a walker job of TASK (default sweep). Resent every 0.5 s until the server answers (same request id, so
                      never queued twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
   status JOB         one job's state, counts and timings
@@ -46,7 +47,8 @@ enum Exit { kOk = 0, kUsage_ = 1, kRejected = 2, kNoAnswer = 3, kFileError = 4 }
 struct Options {
   std::string command;
   std::vector<std::string> positional;
-  std::string lcm_url, db, spec_file, foot, sweep, values, name, request_id, state, out, what = "solutions";
+  std::string lcm_url, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
+      what = "solutions";
   double timeout = 10.0, watch_timeout = 3600.0;
   int point_delay_ms = -1;
   bool watch = false;
@@ -83,6 +85,8 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--foot") o.foot = next();
     else if (a == "--sweep") o.sweep = next();
     else if (a == "--values") o.values = next();
+    else if (a == "--speeds") o.speeds = next();
+    else if (a == "--task") o.task = next();
     else if (a == "--name") o.name = next();
     else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
     else if (a == "--request-id") o.request_id = next();
@@ -122,13 +126,17 @@ std::int64_t job_argument(const Options& o) {
 // The spec text of `submit`: the file's, or a foot_sweep built from flags.
 std::string spec_text(const Options& o) {
   if (!o.spec_file.empty()) return read_file(o.spec_file);
-  if (o.foot.empty() || o.sweep.empty() || o.values.empty())
-    throw UsageError("submit needs --spec FILE, or --foot, --sweep and --values");
-  nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_sweep"}};
+  const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
+  if (o.foot.empty() || (!foot_sweep && o.speeds.empty()))
+    throw UsageError("submit needs --spec FILE, or --foot with --sweep and --values, or --foot with --speeds");
+  nlohmann::json spec = {{"scene", "walker"}, {"task", foot_sweep ? "foot_sweep" : o.task}};
   std::ifstream foot_file(o.foot);
   spec["foot"] = foot_file ? nlohmann::json::parse(read_file(o.foot), nullptr, false) : nlohmann::json(o.foot);
   if (spec["foot"].is_discarded()) throw std::runtime_error("--foot " + o.foot + ": not valid JSON");
-  spec["sweep"] = {{"parameter", o.sweep}, {"values", o.values}};
+  if (foot_sweep)
+    spec["sweep"] = {{"parameter", o.sweep}, {"values", o.values}};
+  else
+    spec["speeds"] = o.speeds;
   if (o.point_delay_ms >= 0) spec["point_delay_ms"] = o.point_delay_ms;
   if (!o.name.empty()) spec["name"] = o.name;
   return spec.dump();
@@ -181,6 +189,13 @@ class Session {
 
 int exit_for_state(const std::string& state) { return state == "done" ? kOk : kRejected; }
 
+std::string eta_text(double seconds) {
+  if (!std::isfinite(seconds)) return "?";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, seconds < 10 ? "%.1f s" : "%.0f s", seconds);
+  return buf;
+}
+
 int watch(Session& s, const Options& o, std::int64_t job_id) {
   const bool tty = isatty(fileno(stderr));
   auto bar = [&](const cyclopt_lcm::job_progress_t& p) {
@@ -189,7 +204,7 @@ int watch(Session& s, const Options& o, std::int64_t job_id) {
     std::fprintf(stderr, "%sjob %lld [%s%s] %5.1f%% %d/%d param %.6g objective %.6g ETA %s%s",
                  tty ? "\r" : "", static_cast<long long>(p.job_id), std::string(filled, '#').c_str(),
                  std::string(30 - filled, '.').c_str(), pct, p.points_done, p.points_total, p.parameter, p.objective,
-                 std::isfinite(p.eta_seconds) ? (std::to_string(static_cast<int>(p.eta_seconds)) + " s").c_str() : "?",
+                 eta_text(p.eta_seconds).c_str(),
                  tty ? "   " : "\n");
   };
   const auto done = s.remote().watch(job_id, bar, o.watch_timeout);

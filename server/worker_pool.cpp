@@ -28,7 +28,10 @@ void WorkerPool::wake() { wake_.notify_all(); }
 void WorkerPool::cancel(std::int64_t job_id) {
   std::lock_guard lock(mutex_);
   const auto it = cancel_flags_.find(job_id);
-  if (it != cancel_flags_.end()) *it->second = true;
+  if (it != cancel_flags_.end())
+    *it->second = true;
+  else
+    early_cancels_.insert(job_id);  // claimed, but run_job has not registered it yet
 }
 
 void WorkerPool::stop() {
@@ -58,6 +61,7 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
   {
     std::lock_guard lock(mutex_);
     cancel_flags_[job.id] = cancel;
+    if (early_cancels_.erase(job.id)) *cancel = true;
   }
   const nlohmann::json spec = nlohmann::json::parse(job.spec_json, nullptr, false);
   WorkerJobContext ctx(job, service::effective_limits(spec, config_.caps), config_.progress_hz, store_, publisher_,

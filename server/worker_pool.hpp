@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -40,6 +41,7 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::map<std::int64_t, std::shared_ptr<std::atomic<bool>>> cancel_flags_;  // running jobs
+  std::set<std::int64_t> early_cancels_;  // cancelled after being claimed, before their flag existed
   std::vector<std::thread> threads_;
 };
 

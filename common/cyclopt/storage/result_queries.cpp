@@ -16,51 +16,55 @@ int count(ResultStore& store, const std::string& table, std::int64_t job_id) {
   return static_cast<int>(q.int64(0));
 }
 
-nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit, bool with_trajectory) {
+// Runs `sql` (parameters: job id, limit, offset) under the store's lock; one JSON row per result
+// row, built by `row`.
+template <class RowFn>
+nlohmann::json paged_rows(ResultStore& store, const char* sql, std::int64_t job_id, int offset, int limit, RowFn row) {
   std::lock_guard lock(store.mutex());
-  Statement q(store.connection(),
-              "SELECT s.curve_index, s.point_index, s.parameter, s.objective, s.constraint_violation, s.iterations, "
-              "s.status, s.values_json, s.solved_at, t.data FROM solutions s LEFT JOIN trajectories t "
-              "ON t.solution_id = s.id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index LIMIT ? OFFSET ?");
+  Statement q(store.connection(), sql);
   q.bind(1, job_id).bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
   nlohmann::json rows = nlohmann::json::array();
-  while (q.step()) {
-    nlohmann::json r = {{"curve", q.int64(0)},
-                        {"point", q.int64(1)},
-                        {"parameter", nullable(q.real(2))},
-                        {"objective", nullable(q.real(3))},
-                        {"constraint_violation", nullable(q.real(4))},
-                        {"iterations", q.int64(5)},
-                        {"status", q.text(6)},
-                        {"values", nlohmann::json::parse(q.text(7))},
-                        {"solved_at", q.real(8)}};
-    if (with_trajectory && !q.is_null(9)) r["trajectory"] = nlohmann::json::parse(q.text(9));
-    rows.push_back(std::move(r));
-  }
+  while (q.step()) rows.push_back(row(q));
   return rows;
+}
+
+nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit, bool with_trajectory) {
+  return paged_rows(
+      store,
+      "SELECT s.curve_index, s.point_index, s.parameter, s.objective, s.constraint_violation, s.iterations, "
+      "s.status, s.values_json, s.solved_at, t.data FROM solutions s LEFT JOIN trajectories t "
+      "ON t.solution_id = s.id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index LIMIT ? OFFSET ?",
+      job_id, offset, limit, [&](const Statement& q) {
+        nlohmann::json r = {{"curve", q.int64(0)},
+                            {"point", q.int64(1)},
+                            {"parameter", nullable(q.real(2))},
+                            {"objective", nullable(q.real(3))},
+                            {"constraint_violation", nullable(q.real(4))},
+                            {"iterations", q.int64(5)},
+                            {"status", q.text(6)},
+                            {"values", nlohmann::json::parse(q.text(7))},
+                            {"solved_at", q.real(8)}};
+        if (with_trajectory && !q.is_null(9)) r["trajectory"] = nlohmann::json::parse(q.text(9));
+        return r;
+      });
 }
 
 nlohmann::json event_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
-  std::lock_guard lock(store.mutex());
-  Statement q(store.connection(),
-              "SELECT at, kind, message FROM events WHERE job_id = ? ORDER BY id LIMIT ? OFFSET ?");
-  q.bind(1, job_id).bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
-  nlohmann::json rows = nlohmann::json::array();
-  while (q.step()) rows.push_back({{"at", q.real(0)}, {"kind", q.text(1)}, {"message", q.text(2)}});
-  return rows;
+  return paged_rows(store, "SELECT at, kind, message FROM events WHERE job_id = ? ORDER BY id LIMIT ? OFFSET ?", job_id,
+                    offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"at", q.real(0)}, {"kind", q.text(1)}, {"message", q.text(2)}};
+                    });
 }
 
 nlohmann::json curve_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
-  std::lock_guard lock(store.mutex());
-  Statement q(store.connection(),
-              "SELECT c.curve_index, c.name, c.parameter_name, "
-              "(SELECT count(*) FROM solutions s WHERE s.job_id = c.job_id AND s.curve_index = c.curve_index) "
-              "FROM curves c WHERE c.job_id = ? ORDER BY c.curve_index LIMIT ? OFFSET ?");
-  q.bind(1, job_id).bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
-  nlohmann::json rows = nlohmann::json::array();
-  while (q.step())
-    rows.push_back({{"curve", q.int64(0)}, {"name", q.text(1)}, {"parameter_name", q.text(2)}, {"points", q.int64(3)}});
-  return rows;
+  return paged_rows(store,
+                    "SELECT c.curve_index, c.name, c.parameter_name, "
+                    "(SELECT count(*) FROM solutions s WHERE s.job_id = c.job_id AND s.curve_index = c.curve_index) "
+                    "FROM curves c WHERE c.job_id = ? ORDER BY c.curve_index LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{
+                          {"curve", q.int64(0)}, {"name", q.text(1)}, {"parameter_name", q.text(2)}, {"points", q.int64(3)}};
+                    });
 }
 
 JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
