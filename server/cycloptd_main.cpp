@@ -49,9 +49,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "; re-queued %d interrupted job(s), cancelled %d\n", srv.recovery().requeued,
                  srv.recovery().cancelled);
     srv.serve(g_stop);
-    std::fprintf(stderr, "cycloptd: stopping (accepted %ld, duplicates %ld, rejected %ld, queries %ld)\n",
-                 srv.counters().accepted.load(), srv.counters().duplicates.load(), srv.counters().rejected.load(),
-                 srv.counters().queries.load());
+    const auto& c = srv.counters();
+    const long submissions = c.accepted + c.duplicates + c.rejected;
+    std::fprintf(stderr,
+                 "cycloptd: stopping (accepted %ld, duplicates %ld, rejected %ld, queries %ld; "
+                 "%.3f ms per submission handled)\n",
+                 c.accepted.load(), c.duplicates.load(), c.rejected.load(), c.queries.load(),
+                 submissions > 0 ? 1e3 * c.submit_seconds / submissions : 0.0);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cycloptd: %s\n", e.what());
     return 2;

@@ -11,6 +11,7 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 
+#include <chrono>
 #include <cstdio>
 
 namespace cyclopt::server {
@@ -67,6 +68,13 @@ void RequestHandler::reject(const std::string& request_id, const std::string& fi
 }
 
 void RequestHandler::on_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  const auto t0 = std::chrono::steady_clock::now();
+  handle_submit(rbuf, channel);
+  counters_.submit_seconds =
+      counters_.submit_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
   cyclopt_lcm::job_submit_t msg;
   if (!decode(rbuf, msg)) return reject("", channel, undecodable(channel, rbuf, "job_submit_t"));
   try {

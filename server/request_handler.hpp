@@ -21,6 +21,7 @@ struct RequestCounters {
   std::atomic<long> duplicates{0};
   std::atomic<long> rejected{0};
   std::atomic<long> queries{0};
+  std::atomic<double> submit_seconds{0.0};  // wall time spent handling submissions (decode .. ack)
 };
 
 class RequestHandler {
@@ -35,6 +36,7 @@ class RequestHandler {
   void on_query(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
 
  private:
+  void handle_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void reject(const std::string& request_id, const std::string& field, const std::string& problem);
 
   const service::JobKindRegistry& kinds_;

@@ -12,8 +12,9 @@
 //     attempts      INTEGER               how often a worker started it (>1 after a resume)
 //     submitted_at, started_at, finished_at  REAL, Unix seconds (UTC)
 //     points_total  INTEGER               announced by the job kind (NULL until known)
-//     run_seconds, publish_seconds  REAL  wall time inside the job kind / publishing progress,
-//                                         summed over attempts
+//     run_seconds, publish_seconds  REAL  wall time inside the job kind / CPU time its worker
+//                                         spent publishing progress, summed over attempts
+//                                         (an attempt ended by kill -9 is not counted)
 //     error         TEXT                  why a job failed (NULL otherwise)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
 //                 requeued, cancel_requested, done, failed, cancelled, interrupted
