@@ -25,8 +25,9 @@ directly (read-only) when given --db FILE.
          [--name TEXT] [--request-id ID] [--watch]
   submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
-                     spec, --speeds a walker job of TASK (default sweep). Resent every 0.5 s until the server answers (same request id, so
-                     never queued twice). Prints the job id.
+                     spec, --speeds a walker job of TASK (default sweep). Resent every
+                     0.5 s until the server answers (same request id, so never queued
+                     twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
   status JOB         one job's state, counts and timings
   list [--state S]   jobs (S: queued, running, done, failed, cancelled)
@@ -162,7 +163,11 @@ class Session {
     }
     r.limit = 1 << 30;
     auto page = remote().query(r, o_.timeout);
-    if (!page) throw NoAnswer("no answer to the query within " + std::to_string(o_.timeout) + " s");
+    if (!page) {
+      char text[96];
+      std::snprintf(text, sizeof text, "no answer from cycloptd within %g s", o_.timeout);
+      throw NoAnswer(text);
+    }
     return *page;
   }
 
