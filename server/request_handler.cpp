@@ -102,6 +102,8 @@ void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::st
     reject(msg.request_id, e.field(), e.what());
   } catch (const std::exception& e) {
     reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+  } catch (...) {
+    reject(msg.request_id, "server", "server: internal error");
   }
 }
 
@@ -124,6 +126,8 @@ void RequestHandler::on_cancel(const lcm::ReceiveBuffer* rbuf, const std::string
     publisher_.publish(channels::kAck, ack);
   } catch (const std::exception& e) {
     reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+  } catch (...) {
+    reject(msg.request_id, "server", "server: internal error");
   }
 }
 
@@ -158,6 +162,8 @@ void RequestHandler::on_query(const lcm::ReceiveBuffer* rbuf, const std::string&
     reply.next_offset = next < page.total && n > 0 ? next : -1;
   } catch (const std::exception& e) {
     reply.error = e.what();
+  } catch (...) {
+    reply.error = "server: internal error";
   }
   publisher_.publish(channels::kQueryReply, reply);
 }

@@ -73,6 +73,8 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
     kind->run(spec, ctx);
   } catch (const std::exception& e) {
     error = e.what();
+  } catch (...) {
+    error = "task '" + job.task + "' failed with a non-standard exception";
   }
   ctx.flush_progress();
   const double run_seconds = ctx.elapsed_seconds();

@@ -78,6 +78,12 @@ TEST(JobSpec, ErrorsNameTheField) {
   EXPECT_EQ(field_of(s), "sweep.values[2]");
   EXPECT_EQ(failing_field([] { parse_job_spec_text("{\"scene\": "); }), "spec_json");
   EXPECT_EQ(failing_field([] { parse_job_spec_text("[1, 2]"); }), "spec_json");
+  // Deep nesting within the 16 KiB limit neither overflows the stack nor passes.
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(std::string(16000, '[')); }), "spec_json");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(std::string(8000, '[') + std::string(8000, ']')); }), "spec_json");
+  const std::string deep = "{\"scene\": \"walker\", \"task\": \"foot_sweep\", \"foot\": " + std::string(7000, '[') +
+                           std::string(7000, ']') + "}";
+  EXPECT_EQ(failing_field([&] { validate_job_spec(parse_job_spec_text(deep), builtin_job_kinds()); }), "foot");
 }
 
 TEST(JobSpec, LimitsAreCappedByTheServer) {
