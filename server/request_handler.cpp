@@ -67,6 +67,17 @@ void RequestHandler::reject(const std::string& request_id, const std::string& fi
   publisher_.publish(channels::kAck, ack);
 }
 
+void RequestHandler::accept(const std::string& request_id, std::int64_t job_id, bool duplicate,
+                            const std::string& state) {
+  cyclopt_lcm::job_ack_t ack;
+  ack.request_id = request_id;
+  ack.accepted = true;
+  ack.job_id = job_id;
+  ack.duplicate = duplicate;
+  ack.state = state;
+  publisher_.publish(channels::kAck, ack);
+}
+
 void RequestHandler::on_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
   const auto t0 = std::chrono::steady_clock::now();
   handle_submit(rbuf, channel);
@@ -90,13 +101,7 @@ void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::st
       return reject(msg.request_id, "request_id",
                     "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec");
     ++(out.duplicate ? counters_.duplicates : counters_.accepted);
-    cyclopt_lcm::job_ack_t ack;
-    ack.request_id = msg.request_id;
-    ack.accepted = true;
-    ack.job_id = out.job_id;
-    ack.duplicate = out.duplicate;
-    ack.state = std::string(storage::to_string(out.state));
-    publisher_.publish(channels::kAck, ack);
+    accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)));
     if (!out.duplicate) pool_.wake();
   } catch (const service::SpecError& e) {
     reject(msg.request_id, e.field(), e.what());
@@ -117,13 +122,7 @@ void RequestHandler::on_cancel(const lcm::ReceiveBuffer* rbuf, const std::string
     if (out == storage::CancelOutcome::already_final)
       return reject(msg.request_id, "job_id", "job_id: job " + std::to_string(msg.job_id) + " has already finished");
     pool_.cancel(msg.job_id);
-    cyclopt_lcm::job_ack_t ack;
-    ack.request_id = msg.request_id;
-    ack.accepted = true;
-    ack.job_id = msg.job_id;
-    ack.duplicate = false;
-    ack.state = out == storage::CancelOutcome::cancelled ? "cancelled" : "running";
-    publisher_.publish(channels::kAck, ack);
+    accept(msg.request_id, msg.job_id, false, out == storage::CancelOutcome::cancelled ? "cancelled" : "running");
   } catch (const std::exception& e) {
     reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
   } catch (...) {

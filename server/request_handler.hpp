@@ -37,6 +37,7 @@ class RequestHandler {
 
  private:
   void handle_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void accept(const std::string& request_id, std::int64_t job_id, bool duplicate, const std::string& state);
   void reject(const std::string& request_id, const std::string& field, const std::string& problem);
 
   const service::JobKindRegistry& kinds_;
