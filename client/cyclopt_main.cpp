@@ -31,10 +31,10 @@ directly (read-only) when given --db FILE.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
   status JOB         one job's state, counts and timings
   list [--state S]   jobs (S: queued, running, done, failed, cancelled)
-  query JOB [--what solutions|events|curves]
+  query JOB [--what solutions|events|curves|trajectories]
                      a job's solved points (default) as a table
   export JOB [--out FILE]
-                     everything about a job as JSON (with --db also each point's trajectory)
+                     everything about a job as JSON: spec, events, curves, points, trajectories
   cancel JOB         cancel a queued or running job
 
 Output of status, list, query: aligned table, or --json / --csv.
@@ -267,13 +267,8 @@ int cancel(Session& s, const Options& o) {
 
 int export_job(Session& s, const Options& o) {
   const std::int64_t id = job_argument(o);
-  nlohmann::json j;
-  if (!o.db.empty()) {
-    j = cyclopt::storage::export_job(s.local(), id);
-  } else {
-    j = s.fetch(cyclopt::storage::query_for("job", id)).rows.at(0);
-    for (const char* what : {"events", "curves", "solutions"}) j[what] = s.fetch(cyclopt::storage::query_for(what, id)).rows;
-  }
+  nlohmann::json j = s.fetch(cyclopt::storage::query_for("job", id)).rows.at(0);
+  for (const char* what : cyclopt::storage::kJobParts) j[what] = s.fetch(cyclopt::storage::query_for(what, id)).rows;
   if (o.out.empty()) {
     std::cout << j.dump(2) << "\n";
     return kOk;

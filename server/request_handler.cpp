@@ -149,8 +149,10 @@ void RequestHandler::on_query(const lcm::ReceiveBuffer* rbuf, const std::string&
     int n = 0;
     for (const auto& row : page.rows) {
       const std::string text = row.dump();
-      if (rows.size() + text.size() + 2 > channels::kMaxQueryReplyRowBytes && n > 0) break;
-      if (text.size() + 2 > channels::kMaxQueryReplyRowBytes) break;
+      if (text.size() + 2 > channels::kMaxQueryReplyRowBytes)
+        throw std::length_error("row " + std::to_string(msg.offset + n) + " is " + std::to_string(text.size()) +
+                                " bytes, more than a reply can carry; read it with --db");
+      if (rows.size() + text.size() + 2 > channels::kMaxQueryReplyRowBytes) break;
       rows += (n ? "," : "") + text;
       ++n;
     }

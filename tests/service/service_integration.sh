@@ -167,6 +167,11 @@ while IFS= read -r line; do
 done < <(grep -E '^    sqlite3 .*cyclopt\.db ' "$README")
 [ "$N" -ge 4 ] || fail "found only $N example queries in the README"
 echo "$N README queries answered"
+"$CYCLOPT" export "$JOB" --out "$WORK/remote.json" 2>/dev/null || fail "remote export"
+"$CYCLOPT" export "$JOB" --db "$DB" --out "$WORK/local.json" 2>/dev/null || fail "local export"
+cmp -s "$WORK/remote.json" "$WORK/local.json" || fail "remote and local (read-only) exports differ"
+grep -q '"trajectories"' "$WORK/local.json" || fail "export lacks trajectories"
+echo "export of job $JOB over LCM and from the file opened read-only: identical ($(wc -c <"$WORK/local.json") bytes)"
 
 echo "== 6. lcm-logger recorded our channels"
 kill -TERM "$SERVER"

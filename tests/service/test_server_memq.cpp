@@ -76,6 +76,10 @@ TEST_F(ServerMemq, SubmitWatchAndQuery) {
   ASSERT_TRUE(page);
   EXPECT_EQ(page->rows.size(), 50u);
   EXPECT_EQ(client_.query(storage::query_for("jobs"), 5.0)->total, 1);
+  const auto trajectories = client_.query(storage::query_for("trajectories", ack.job_id), 5.0);
+  ASSERT_TRUE(trajectories);
+  ASSERT_EQ(trajectories->rows.size(), 50u);
+  EXPECT_EQ(trajectories->rows[0]["data"].size(), 13u);  // the rolling samples of the point
 }
 
 TEST_F(ServerMemq, LargeResultsArriveInSeveralPages) {

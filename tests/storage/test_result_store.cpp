@@ -80,7 +80,10 @@ TEST_F(ResultStoreTest, PointsAreStoredOnce) {
   const QueryPage page = run_query(s, query_for("solutions", id));
   ASSERT_EQ(page.total, 1);
   EXPECT_EQ(page.rows[0]["values"]["i"], 3);
-  EXPECT_EQ(export_job(s, id)["solutions"][0]["trajectory"], nlohmann::json::array({1, 2, 3}));
+  const QueryPage t = run_query(s, query_for("trajectories", id));
+  ASSERT_EQ(t.total, 1);
+  EXPECT_EQ(t.rows[0]["point"], 3);
+  EXPECT_EQ(t.rows[0]["data"], nlohmann::json::array({1, 2, 3}));
 }
 
 TEST_F(ResultStoreTest, CancelQueuedAndRunningJobs) {

@@ -9,9 +9,13 @@ namespace {
 
 nlohmann::json nullable(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-int count(ResultStore& store, const std::string& table, std::int64_t job_id) {
+// Rows of `what` (solutions, events, curves, trajectories) belonging to a job.
+int count(ResultStore& store, const std::string& what, std::int64_t job_id) {
   std::lock_guard lock(store.mutex());
-  Statement q(store.connection(), "SELECT count(*) FROM " + table + " WHERE job_id = ?");
+  Statement q(store.connection(),
+              what == "trajectories"
+                  ? "SELECT count(*) FROM trajectories t JOIN solutions s ON s.id = t.solution_id WHERE s.job_id = ?"
+                  : "SELECT count(*) FROM " + what + " WHERE job_id = ?");
   q.bind(1, job_id).step();
   return static_cast<int>(q.int64(0));
 }
@@ -28,25 +32,36 @@ nlohmann::json paged_rows(ResultStore& store, const char* sql, std::int64_t job_
   return rows;
 }
 
-nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit, bool with_trajectory) {
-  return paged_rows(
-      store,
-      "SELECT s.curve_index, s.point_index, s.parameter, s.objective, s.constraint_violation, s.iterations, "
-      "s.status, s.values_json, s.solved_at, t.data FROM solutions s LEFT JOIN trajectories t "
-      "ON t.solution_id = s.id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index LIMIT ? OFFSET ?",
-      job_id, offset, limit, [&](const Statement& q) {
-        nlohmann::json r = {{"curve", q.int64(0)},
-                            {"point", q.int64(1)},
-                            {"parameter", nullable(q.real(2))},
-                            {"objective", nullable(q.real(3))},
-                            {"constraint_violation", nullable(q.real(4))},
-                            {"iterations", q.int64(5)},
-                            {"status", q.text(6)},
-                            {"values", nlohmann::json::parse(q.text(7))},
-                            {"solved_at", q.real(8)}};
-        if (with_trajectory && !q.is_null(9)) r["trajectory"] = nlohmann::json::parse(q.text(9));
-        return r;
-      });
+nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store,
+                    "SELECT curve_index, point_index, parameter, objective, constraint_violation, iterations, status, "
+                    "values_json, solved_at FROM solutions WHERE job_id = ? ORDER BY curve_index, point_index "
+                    "LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"curve", q.int64(0)},
+                                            {"point", q.int64(1)},
+                                            {"parameter", nullable(q.real(2))},
+                                            {"objective", nullable(q.real(3))},
+                                            {"constraint_violation", nullable(q.real(4))},
+                                            {"iterations", q.int64(5)},
+                                            {"status", q.text(6)},
+                                            {"values", nlohmann::json::parse(q.text(7))},
+                                            {"solved_at", q.real(8)}};
+                    });
+}
+
+nlohmann::json trajectory_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store,
+                    "SELECT s.curve_index, s.point_index, t.format, t.data FROM trajectories t JOIN solutions s "
+                    "ON s.id = t.solution_id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index "
+                    "LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"curve", q.int64(0)},
+                                            {"point", q.int64(1)},
+                                            {"format", q.text(2)},
+                                            {"data", q.text(2) == "json" ? nlohmann::json::parse(q.text(3))
+                                                                         : nlohmann::json(q.text(3))}};
+                    });
 }
 
 nlohmann::json event_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
@@ -126,26 +141,20 @@ QueryPage run_query(ResultStore& store, const QueryRequest& r) {
     if (r.offset > 0) page.rows = nlohmann::json::array();
     return page;
   }
-  if (r.what != "solutions" && r.what != "events" && r.what != "curves")
-    throw std::invalid_argument("what: '" + r.what + "' is not one of jobs, job, solutions, events, curves");
+  if (r.what != "solutions" && r.what != "events" && r.what != "curves" && r.what != "trajectories")
+    throw std::invalid_argument("what: '" + r.what +
+                                "' is not one of jobs, job, solutions, events, curves, trajectories");
   existing_job(store, r.job_id);
   page.total = count(store, r.what, r.job_id);
   if (r.what == "solutions")
-    page.rows = solution_rows(store, r.job_id, r.offset, r.limit, false);
+    page.rows = solution_rows(store, r.job_id, r.offset, r.limit);
   else if (r.what == "events")
     page.rows = event_rows(store, r.job_id, r.offset, r.limit);
-  else
+  else if (r.what == "curves")
     page.rows = curve_rows(store, r.job_id, r.offset, r.limit);
+  else
+    page.rows = trajectory_rows(store, r.job_id, r.offset, r.limit);
   return page;
-}
-
-nlohmann::json export_job(ResultStore& store, std::int64_t job_id) {
-  nlohmann::json j = to_json(existing_job(store, job_id), true);
-  constexpr int kAll = 1 << 30;
-  j["events"] = event_rows(store, job_id, 0, kAll);
-  j["curves"] = curve_rows(store, job_id, 0, kAll);
-  j["solutions"] = solution_rows(store, job_id, 0, kAll, true);
-  return j;
 }
 
 }  // namespace cyclopt::storage

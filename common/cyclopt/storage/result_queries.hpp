@@ -13,7 +13,7 @@
 namespace cyclopt::storage {
 
 struct QueryRequest {
-  std::string what = "jobs";  // jobs | job | solutions | events | curves
+  std::string what = "jobs";  // jobs | job | solutions | events | curves | trajectories
   std::int64_t job_id = 0;    // for everything but "jobs"
   std::string state;          // filter for "jobs"; empty = all
   int offset = 0;
@@ -34,8 +34,7 @@ QueryPage run_query(ResultStore& store, const QueryRequest& request);
 
 nlohmann::json to_json(const JobRecord& job, bool with_spec);
 
-// Everything about one job: the job row with its spec, events, curves, solutions and their
-// trajectories. Throws std::invalid_argument if the job does not exist.
-nlohmann::json export_job(ResultStore& store, std::int64_t job_id);
+// The row kinds that belong to one job (what `cyclopt export` collects besides the job row).
+inline constexpr const char* kJobParts[] = {"events", "curves", "solutions", "trajectories"};
 
 }  // namespace cyclopt::storage
