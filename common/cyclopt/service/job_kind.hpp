@@ -9,7 +9,7 @@
 //
 //   // walker_sweep_kind.cpp
 //   service::JobKind walker_sweep_kind() {
-//     return {"sweep", {"walker"}, {"foot", "speeds", "objective", "solver"},
+//     return {"sweep", {"walker"}, {"foot", "speeds"},
 //       [](const nlohmann::json& spec) {            // throw SpecError{"speeds", "..."} on bad input
 //         foot::foot_spec_from_json(spec.at("foot"), "foot");
 //         service::parse_value_range(spec.at("speeds"), "speeds", 0.05, 5.0);
@@ -22,9 +22,14 @@
 //         for (int i = 0; i < int(speeds.size()); ++i) {
 //           if (done.count({0, i})) continue;                    // resumed job: already solved
 //           if (ctx.stop_reason() != service::StopReason::none) return;
-//           // ... solve, with SolverOptions::on_iteration calling ctx.report_progress(),
-//           //     ctx.count_iterations(1) and returning ctx.stop_reason() == none ...
-//           ctx.store_point({.key = {0, i}, .parameter = speeds[i], .objective = ...});
+//           // ... solve with service::solver_options_from_spec(spec), whose on_iteration calls
+//           //     ctx.report_progress(...), ctx.count_iterations(1) and returns
+//           //     ctx.stop_reason() == StopReason::none ...
+//           storage::SolutionPoint p;
+//           p.key = {0, i};
+//           p.parameter = speeds[i];
+//           p.objective = summary.objective;              // + values, status, trajectory
+//           ctx.store_point(p);
 //         }
 //       }};
 //   }
