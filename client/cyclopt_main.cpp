@@ -1,0 +1,327 @@
+// cyclopt: command-line client of the cyclopt job server (see kUsage).
+#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage/result_store.hpp"
+#include "row_table.hpp"
+#include "service_client.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: cyclopt [--lcm-url URL] [--timeout S] COMMAND [ARGS]
+
+Client of the cycloptd job server. Remote commands talk LCM (default URL: LCM's, i.e.
+LCM_DEFAULT_URL or UDP multicast); status, list, query and export read a results database file
+directly (read-only) when given --db FILE.
+
+  submit --spec FILE.json [--request-id ID] [--watch]
+  submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI [--point-delay-ms N]
+         [--name TEXT] [--request-id ID] [--watch]
+  submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
+                     queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
+                     spec, --speeds a walker job of TASK (default sweep). Resent every
+                     0.5 s until the server answers (same request id, so never queued
+                     twice). Prints the job id.
+  watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
+  status JOB         one job's state, counts and timings
+  list [--state S]   jobs (S: queued, running, done, failed, cancelled)
+  query JOB [--what solutions|events|curves|trajectories]
+                     a job's solved points (default) as a table
+  export JOB [--out FILE]
+                     everything about a job as JSON: spec, events, curves, points, trajectories
+  cancel JOB         cancel a queued or running job
+
+Output of status, list, query: aligned table, or --json / --csv.
+Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE.
+Exit codes: 0 ok; 1 bad usage; 2 rejected, not found, or job failed / cancelled;
+3 no answer from the server within the timeout; 4 database or file error.
+)";
+
+enum Exit { kOk = 0, kUsage_ = 1, kRejected = 2, kNoAnswer = 3, kFileError = 4 };
+
+struct Options {
+  std::string command;
+  std::vector<std::string> positional;
+  std::string lcm_url, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
+      what = "solutions";
+  double timeout = 10.0, watch_timeout = 3600.0;
+  int point_delay_ms = -1;
+  bool watch = false;
+  cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
+};
+
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+struct NoAnswer : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+Options parse_args(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(a + " needs a value");
+      return argv[++i];
+    };
+    auto number = [&](const std::string& text) {
+      try {
+        return std::stod(text);
+      } catch (const std::exception&) {
+        throw UsageError(a + ": '" + text + "' is not a number");
+      }
+    };
+    if (a == "--lcm-url") o.lcm_url = next();
+    else if (a == "--timeout") o.timeout = number(next());
+    else if (a == "--watch-timeout") o.watch_timeout = number(next());
+    else if (a == "--db") o.db = next();
+    else if (a == "--spec") o.spec_file = next();
+    else if (a == "--foot") o.foot = next();
+    else if (a == "--sweep") o.sweep = next();
+    else if (a == "--values") o.values = next();
+    else if (a == "--speeds") o.speeds = next();
+    else if (a == "--task") o.task = next();
+    else if (a == "--name") o.name = next();
+    else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
+    else if (a == "--request-id") o.request_id = next();
+    else if (a == "--state") o.state = next();
+    else if (a == "--what") o.what = next();
+    else if (a == "--out") o.out = next();
+    else if (a == "--watch") o.watch = true;
+    else if (a == "--json") o.format = cyclopt::client::RowFormat::json;
+    else if (a == "--csv") o.format = cyclopt::client::RowFormat::csv;
+    else if (a.rfind("--", 0) == 0) throw UsageError("unknown option " + a);
+    else if (o.command.empty()) o.command = a;
+    else o.positional.push_back(a);
+  }
+  if (!(o.timeout > 0) || !(o.watch_timeout > 0)) throw UsageError("--timeout and --watch-timeout must be > 0");
+  return o;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::int64_t job_argument(const Options& o) {
+  if (o.positional.size() != 1) throw UsageError(o.command + " needs exactly one JOB id");
+  try {
+    std::size_t used = 0;
+    const long long id = std::stoll(o.positional[0], &used);
+    if (used == o.positional[0].size() && id > 0) return id;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("JOB must be a positive integer job id, got '" + o.positional[0] + "'");
+}
+
+// The spec text of `submit`: the file's, or a foot_sweep built from flags.
+std::string spec_text(const Options& o) {
+  if (!o.spec_file.empty()) return read_file(o.spec_file);
+  const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
+  if (o.foot.empty() || (!foot_sweep && o.speeds.empty()))
+    throw UsageError("submit needs --spec FILE, or --foot with --sweep and --values, or --foot with --speeds");
+  nlohmann::json spec = {{"scene", "walker"}, {"task", foot_sweep ? "foot_sweep" : o.task}};
+  std::ifstream foot_file(o.foot);
+  spec["foot"] = foot_file ? nlohmann::json::parse(read_file(o.foot), nullptr, false) : nlohmann::json(o.foot);
+  if (spec["foot"].is_discarded()) throw std::runtime_error("--foot " + o.foot + ": not valid JSON");
+  if (foot_sweep)
+    spec["sweep"] = {{"parameter", o.sweep}, {"values", o.values}};
+  else
+    spec["speeds"] = o.speeds;
+  if (o.point_delay_ms >= 0) spec["point_delay_ms"] = o.point_delay_ms;
+  if (!o.name.empty()) spec["name"] = o.name;
+  return spec.dump();
+}
+
+class Session {
+ public:
+  explicit Session(const Options& o) : o_(o) {}
+
+  // Every row a query matches, from the database file or the server.
+  cyclopt::storage::QueryPage fetch(cyclopt::storage::QueryRequest r) {
+    r.limit = 1000;
+    if (!o_.db.empty()) {
+      cyclopt::storage::ResultStore& store = local();
+      cyclopt::storage::QueryPage all;
+      while (true) {
+        cyclopt::storage::QueryPage page = cyclopt::storage::run_query(store, r);
+        all.total = page.total;
+        for (auto& row : page.rows) all.rows.push_back(std::move(row));
+        r.offset += static_cast<int>(page.rows.size());
+        if (page.rows.empty() || r.offset >= page.total) return all;
+      }
+    }
+    r.limit = 1 << 30;
+    auto page = remote().query(r, o_.timeout);
+    if (!page) {
+      char text[96];
+      std::snprintf(text, sizeof text, "no answer from cycloptd within %g s", o_.timeout);
+      throw NoAnswer(text);
+    }
+    return *page;
+  }
+
+  cyclopt::storage::ResultStore& local() {
+    if (!store_) store_.emplace(o_.db, cyclopt::storage::OpenMode::read_only);
+    return *store_;
+  }
+
+  cyclopt::client::ServiceClient& remote() {
+    if (!client_) {
+      lcm_.emplace(o_.lcm_url);
+      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + o_.lcm_url + "'");
+      client_.emplace(*lcm_);
+    }
+    return *client_;
+  }
+
+ private:
+  const Options& o_;
+  std::optional<cyclopt::storage::ResultStore> store_;
+  std::optional<lcm::LCM> lcm_;
+  std::optional<cyclopt::client::ServiceClient> client_;
+};
+
+int exit_for_state(const std::string& state) { return state == "done" ? kOk : kRejected; }
+
+std::string eta_text(double seconds) {
+  if (!std::isfinite(seconds)) return "?";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, seconds < 10 ? "%.1f s" : "%.0f s", seconds);
+  return buf;
+}
+
+int watch(Session& s, const Options& o, std::int64_t job_id) {
+  const bool tty = isatty(fileno(stderr));
+  auto bar = [&](const cyclopt_lcm::job_progress_t& p) {
+    const double pct = std::isfinite(p.percent) ? p.percent : 0.0;
+    const int filled = static_cast<int>(pct / 100.0 * 30);
+    std::fprintf(stderr, "%sjob %lld [%s%s] %5.1f%% %d/%d param %.6g objective %.6g ETA %s%s",
+                 tty ? "\r" : "", static_cast<long long>(p.job_id), std::string(filled, '#').c_str(),
+                 std::string(30 - filled, '.').c_str(), pct, p.points_done, p.points_total, p.parameter, p.objective,
+                 eta_text(p.eta_seconds).c_str(),
+                 tty ? "   " : "\n");
+  };
+  const auto done = s.remote().watch(job_id, bar, o.watch_timeout);
+  if (tty) std::fputc('\n', stderr);
+  if (!done) {
+    std::fprintf(stderr, "cyclopt: job %lld did not finish within %.0f s\n", static_cast<long long>(job_id), o.watch_timeout);
+    return kNoAnswer;
+  }
+  std::printf("job %lld %s: %d points stored, %.3f s (progress publication %.6f s)%s%s\n",
+              static_cast<long long>(job_id), done->state.c_str(), done->points_stored, done->run_seconds,
+              done->publish_seconds, done->error.empty() ? "" : ", error: ", done->error.c_str());
+  return exit_for_state(done->state);
+}
+
+int submit(Session& s, const Options& o) {
+  const std::string spec = spec_text(o);
+  const std::string id = o.request_id.empty() ? cyclopt::client::new_request_id() : o.request_id;
+  const auto ack = s.remote().submit(id, spec, o.timeout);
+  if (!ack) {
+    std::fprintf(stderr, "cyclopt: no answer from cycloptd within %.1f s (request %s)\n", o.timeout, id.c_str());
+    return kNoAnswer;
+  }
+  if (!ack->accepted) {
+    std::fprintf(stderr, "cyclopt: rejected (field %s): %s\n", ack->field.c_str(), ack->problem.c_str());
+    return kRejected;
+  }
+  std::printf("job %lld %s (request %s, state %s)\n", static_cast<long long>(ack->job_id),
+              ack->duplicate ? "already submitted" : "queued", id.c_str(), ack->state.c_str());
+  std::fflush(stdout);
+  return o.watch ? watch(s, o, ack->job_id) : kOk;
+}
+
+int status(Session& s, const Options& o) {
+  const auto page = s.fetch(cyclopt::storage::query_for("job", job_argument(o)));
+  nlohmann::json job = page.rows.at(0);
+  if (o.format == cyclopt::client::RowFormat::table) {
+    for (const auto& [k, v] : job.items()) std::printf("%-17s %s\n", k.c_str(), v.is_string() ? v.get<std::string>().c_str() : v.dump().c_str());
+  } else {
+    cyclopt::client::print_rows(std::cout, nlohmann::json::array({job}), o.format);
+  }
+  return kOk;
+}
+
+int cancel(Session& s, const Options& o) {
+  const std::int64_t id = job_argument(o);
+  const auto ack = s.remote().cancel(id, o.timeout);
+  if (!ack) return kNoAnswer;
+  if (!ack->accepted) {
+    std::fprintf(stderr, "cyclopt: %s\n", ack->problem.c_str());
+    return kRejected;
+  }
+  std::printf("job %lld %s\n", static_cast<long long>(id), ack->state == "cancelled" ? "cancelled" : "cancel requested");
+  return kOk;
+}
+
+int export_job(Session& s, const Options& o) {
+  const std::int64_t id = job_argument(o);
+  nlohmann::json j = s.fetch(cyclopt::storage::query_for("job", id)).rows.at(0);
+  for (const char* what : cyclopt::storage::kJobParts) j[what] = s.fetch(cyclopt::storage::query_for(what, id)).rows;
+  if (o.out.empty()) {
+    std::cout << j.dump(2) << "\n";
+    return kOk;
+  }
+  std::ofstream out(o.out);
+  out << j.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write '" + o.out + "'");
+  std::fprintf(stderr, "cyclopt: wrote job %lld to %s\n", static_cast<long long>(id), o.out.c_str());
+  return kOk;
+}
+
+int run(const Options& o) {
+  Session s(o);
+  if (o.command == "submit") return submit(s, o);
+  if (o.command == "watch") return watch(s, o, job_argument(o));
+  if (o.command == "status") return status(s, o);
+  if (o.command == "cancel") return cancel(s, o);
+  if (o.command == "export") return export_job(s, o);
+  if (o.command == "list") {
+    cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows, o.format);
+    return kOk;
+  }
+  if (o.command == "query") {
+    cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows, o.format);
+    return kOk;
+  }
+  throw UsageError(o.command.empty() ? "no command given" : "unknown command '" + o.command + "'");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::fputs(kUsage, stdout);
+      return kOk;
+    }
+  try {
+    return run(parse_args(argc, argv));
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "cyclopt: %s\n%s", e.what(), kUsage);
+    return kUsage_;
+  } catch (const NoAnswer& e) {
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kNoAnswer;
+  } catch (const cyclopt::client::QueryError& e) {
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kRejected;
+  } catch (const std::invalid_argument& e) {  // local queries: unknown job, bad filter
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kRejected;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kFileError;
+  }
+}

@@ -1,0 +1,171 @@
+#include "service_client.hpp"
+
+#include <cyclopt_lcm/job_cancel_t.hpp>
+#include <cyclopt_lcm/job_submit_t.hpp>
+#include <cyclopt_lcm/query_request_t.hpp>
+
+#include "cyclopt_channels.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+
+namespace cyclopt::client {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+Clock::duration seconds(double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); }
+}  // namespace
+
+std::string new_request_id() {
+  static thread_local std::mt19937_64 rng(std::random_device{}() ^
+                                          static_cast<std::uint64_t>(Clock::now().time_since_epoch().count()));
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string id;
+  for (int part = 0; part < 2; ++part) {
+    std::uint64_t v = rng();
+    for (int i = 0; i < 16; ++i, v >>= 4) id += kHex[v & 15];
+  }
+  return id;
+}
+
+ServiceClient::ServiceClient(lcm::LCM& lcm) : lcm_(lcm) {
+  lcm_.subscribe(channels::kAck, &ServiceClient::on_ack, this);
+  lcm_.subscribe(channels::kProgress, &ServiceClient::on_progress, this);
+  lcm_.subscribe(channels::kDone, &ServiceClient::on_done, this);
+  lcm_.subscribe(channels::kQueryReply, &ServiceClient::on_query_reply, this);
+}
+
+void ServiceClient::on_ack(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_ack_t* m) {
+  if (awaiting_.count(m->request_id)) acks_[m->request_id] = *m;
+}
+void ServiceClient::on_progress(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_progress_t* m) {
+  if (progress_callback_ && m->job_id == watched_job_) (*progress_callback_)(*m);
+}
+void ServiceClient::on_done(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_done_t* m) {
+  if (m->job_id == watched_job_) done_[m->job_id] = *m;
+}
+void ServiceClient::on_query_reply(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::query_reply_t* m) {
+  if (awaiting_.count(m->request_id)) replies_[m->request_id] = *m;
+}
+
+bool ServiceClient::pump_until(const std::function<bool()>& done, double s) {
+  const auto deadline = Clock::now() + seconds(s);
+  while (!done()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
+    lcm_.handleTimeout(static_cast<int>(std::clamp<long long>(left, 1, 50)));
+  }
+  return true;
+}
+
+template <class Reply>
+std::optional<Reply> ServiceClient::await(std::map<std::string, Reply>& answers, const std::string& id, double s) {
+  const bool got = pump_until([&] { return answers.count(id) > 0; }, s);
+  if (!got) return std::nullopt;
+  Reply r = answers[id];
+  answers.erase(id);
+  return r;
+}
+
+std::optional<cyclopt_lcm::job_ack_t> ServiceClient::submit(const std::string& request_id, const std::string& spec_json,
+                                                            double timeout_seconds, double retry_seconds) {
+  cyclopt_lcm::job_submit_t msg;
+  msg.request_id = request_id;
+  msg.spec_json = spec_json;
+  const auto deadline = Clock::now() + seconds(timeout_seconds);
+  awaiting_.insert(request_id);
+  std::optional<cyclopt_lcm::job_ack_t> ack;
+  // Each round publishes once and then waits a full retry interval (or what is left).
+  for (auto left = deadline - Clock::now(); !ack && left > std::chrono::milliseconds(1); left = deadline - Clock::now()) {
+    lcm_.publish(channels::kSubmit, &msg);
+    ack = await(acks_, request_id, std::min(retry_seconds, std::chrono::duration<double>(left).count()));
+  }
+  awaiting_.erase(request_id);
+  return ack;
+}
+
+std::optional<cyclopt_lcm::job_ack_t> ServiceClient::cancel(std::int64_t job_id, double timeout_seconds) {
+  cyclopt_lcm::job_cancel_t msg;
+  msg.request_id = new_request_id();
+  msg.job_id = job_id;
+  awaiting_.insert(msg.request_id);
+  lcm_.publish(channels::kCancel, &msg);
+  auto ack = await(acks_, msg.request_id, timeout_seconds);
+  awaiting_.erase(msg.request_id);
+  return ack;
+}
+
+std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest request, double timeout_seconds) {
+  storage::QueryPage all;
+  const auto deadline = Clock::now() + seconds(timeout_seconds);
+  int remaining = request.limit;
+  while (true) {
+    cyclopt_lcm::query_request_t msg;
+    msg.request_id = new_request_id();
+    msg.what = request.what;
+    msg.job_id = request.job_id;
+    msg.state = request.state;
+    msg.offset = request.offset;
+    msg.limit = std::min(remaining, channels::kMaxQueryLimit);
+    awaiting_.insert(msg.request_id);
+    lcm_.publish(channels::kQuery, &msg);
+    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+    const auto answer = await(replies_, msg.request_id, left);
+    awaiting_.erase(msg.request_id);
+    if (!answer) return std::nullopt;
+    const cyclopt_lcm::query_reply_t& reply = *answer;
+    if (!reply.error.empty()) throw QueryError(reply.error);
+    all.total = reply.total;
+    for (auto& row : nlohmann::json::parse(reply.rows_json)) all.rows.push_back(std::move(row));
+    remaining -= reply.row_count;
+    if (reply.next_offset < 0 || remaining <= 0) return all;
+    request.offset = reply.next_offset;
+  }
+}
+
+std::optional<cyclopt_lcm::job_done_t> ServiceClient::watch(
+    std::int64_t job_id, const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress,
+    double timeout_seconds, double poll_seconds) {
+  watched_job_ = job_id;
+  progress_callback_ = &on_progress;
+  const auto deadline = Clock::now() + seconds(timeout_seconds);
+  std::optional<cyclopt_lcm::job_done_t> result;
+  while (!result && Clock::now() < deadline) {
+    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+    if (pump_until([&] { return done_.count(job_id) > 0; }, std::min(poll_seconds, left))) {
+      result = done_[job_id];
+      done_.erase(job_id);
+      break;
+    }
+    const auto page = query(storage::query_for("job", job_id), std::min(poll_seconds, left));
+    if (!page || page->rows.empty()) continue;
+    const nlohmann::json& j = page->rows[0];
+    const auto state = storage::job_state_from_string(j["state"].get<std::string>());
+    if (state && storage::is_final(*state)) {
+      cyclopt_lcm::job_done_t d;
+      d.job_id = job_id;
+      d.request_id = j["request_id"];
+      d.state = j["state"];
+      d.points_stored = j["points_stored"];
+      d.run_seconds = j["run_seconds"];
+      d.publish_seconds = j["publish_seconds"];
+      d.error = j["error"];
+      result = d;
+    }
+  }
+  progress_callback_ = nullptr;
+  watched_job_ = -1;
+  return result;
+}
+
+std::optional<cyclopt_lcm::job_ack_t> ServiceClient::send_raw(const std::string& channel, const std::string& bytes,
+                                                              const std::string& reply_id, double timeout_seconds) {
+  awaiting_.insert(reply_id);
+  lcm_.publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
+  auto ack = await(acks_, reply_id, timeout_seconds);
+  awaiting_.erase(reply_id);
+  return ack;
+}
+
+}  // namespace cyclopt::client

@@ -1,0 +1,75 @@
+#pragma once
+// Client side of the LCM protocol (proto/lcm, cyclopt_channels.hpp): submissions retried until
+// acknowledged, cancellation, paged queries and progress watching. Works on any LCM instance,
+// including a memq:// one shared with an in-process server (the waits pump that instance).
+
+#include <cyclopt_lcm/job_ack_t.hpp>
+#include <cyclopt_lcm/job_done_t.hpp>
+#include <cyclopt_lcm/job_progress_t.hpp>
+#include <cyclopt_lcm/query_reply_t.hpp>
+
+#include "cyclopt/storage/result_queries.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace cyclopt::client {
+
+// A fresh, random request id (32 hex digits).
+std::string new_request_id();
+
+// A query the server answered with an error (the message names the field).
+class QueryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ServiceClient {
+ public:
+  explicit ServiceClient(lcm::LCM& lcm);
+
+  // Publishes the submission every retry_seconds until an answer for request_id arrives or
+  // timeout_seconds pass (nullopt). The answer may be a rejection (accepted = false).
+  std::optional<cyclopt_lcm::job_ack_t> submit(const std::string& request_id, const std::string& spec_json,
+                                               double timeout_seconds, double retry_seconds = 0.5);
+  std::optional<cyclopt_lcm::job_ack_t> cancel(std::int64_t job_id, double timeout_seconds);
+  // All pages from request.offset on; nullopt on timeout; throws QueryError.
+  std::optional<storage::QueryPage> query(storage::QueryRequest request, double timeout_seconds);
+  // Calls on_progress for every progress message of the job until its job_done_t arrives
+  // (returned) or timeout_seconds pass. Every poll_seconds the job's state is also queried, so
+  // a job that finished before watching began (or whose done message was lost) still ends the
+  // watch: then a job_done_t is synthesised from the job row.
+  std::optional<cyclopt_lcm::job_done_t> watch(std::int64_t job_id,
+                                               const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress,
+                                               double timeout_seconds, double poll_seconds = 1.0);
+
+  // For tests: publishes arbitrary bytes and waits for the ack with request id `reply_id`.
+  std::optional<cyclopt_lcm::job_ack_t> send_raw(const std::string& channel, const std::string& bytes,
+                                                 const std::string& reply_id, double timeout_seconds);
+
+ private:
+  bool pump_until(const std::function<bool()>& done, double seconds);
+  void on_ack(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_ack_t* m);
+  void on_progress(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_progress_t* m);
+  void on_done(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_done_t* m);
+  void on_query_reply(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::query_reply_t* m);
+
+  // Waits for the answer to `id` (answers to other clients' requests are ignored).
+  template <class Reply>
+  std::optional<Reply> await(std::map<std::string, Reply>& answers, const std::string& id, double seconds);
+
+  lcm::LCM& lcm_;
+  std::set<std::string> awaiting_;  // request ids whose answers are kept
+  std::map<std::string, cyclopt_lcm::job_ack_t> acks_;
+  std::map<std::int64_t, cyclopt_lcm::job_done_t> done_;
+  std::map<std::string, cyclopt_lcm::query_reply_t> replies_;
+  std::int64_t watched_job_ = -1;
+  const std::function<void(const cyclopt_lcm::job_progress_t&)>* progress_callback_ = nullptr;
+};
+
+}  // namespace cyclopt::client

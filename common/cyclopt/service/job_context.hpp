@@ -1,0 +1,48 @@
+#pragma once
+// The interface a running job sees (implemented by the server's worker; tests implement it in
+// memory). All methods are called from the job's own worker thread.
+
+#include "cyclopt/service/progress_report.hpp"
+#include "cyclopt/storage/solution_point.hpp"
+
+#include <cstdint>
+#include <set>
+#include <string>
+
+namespace cyclopt::service {
+
+enum class StopReason { none, cancelled, time_limit, iteration_limit, shutdown };
+const char* to_string(StopReason r);
+
+// Per-job limits after the server's caps were applied to the spec's "limits".
+struct JobLimits {
+  double max_wall_seconds = 3600.0;
+  int max_iterations = 100000;  // summed over all points (solver iterations or point evaluations)
+};
+
+class JobContext {
+ public:
+  virtual ~JobContext() = default;
+
+  virtual std::int64_t job_id() const = 0;
+  virtual const JobLimits& limits() const = 0;
+
+  // Rate-limited: cheap to call after every solver iteration.
+  virtual void report_progress(const ProgressReport& report) = 0;
+  // Counts towards limits().max_iterations; call once per solver iteration or point evaluation.
+  virtual void count_iterations(int n) = 0;
+
+  // Declare the curves and the number of points before solving, so progress has a percentage.
+  virtual void announce(int points_total) = 0;
+  virtual void add_curve(int curve_index, const std::string& name, const std::string& parameter_name) = 0;
+
+  // Commits the point durably before returning (false if it was already stored).
+  virtual bool store_point(const storage::SolutionPoint& point) = 0;
+  // Points committed by earlier attempts of this job: a resumed job skips them.
+  virtual std::set<storage::PointKey> already_stored_points() = 0;
+
+  // Poll between points and inside solver callbacks; return as soon as it is not `none`.
+  virtual StopReason stop_reason() = 0;
+};
+
+}  // namespace cyclopt::service

@@ -1,0 +1,109 @@
+#include "cyclopt/service/job_spec.hpp"
+
+#include "cyclopt/service/spec_fields.hpp"
+
+#include <algorithm>
+
+namespace cyclopt::service {
+
+namespace {
+
+const std::vector<std::string> kCommonFields = {"scene", "task", "name", "objective", "solver", "limits"};
+const std::vector<std::string> kSolverFields = {"solver", "max_iterations", "optimality_tolerance",
+                                                "constraint_tolerance", "print_level"};
+const std::vector<std::string> kLimitFields = {"max_wall_seconds", "max_iterations"};
+constexpr double kMaxWallSeconds = 7 * 86400.0;
+constexpr int kMaxIterationLimit = 1000000000;
+
+void validate_solver(const nlohmann::json& spec) {
+  if (!spec.contains("solver")) return;
+  const nlohmann::json& s = object_value(spec["solver"], "solver");
+  reject_unknown_keys(s, "solver", kSolverFields);
+  if (s.contains("solver")) enum_value(s["solver"], "solver.solver", {"ipopt", "sqp"});
+  optional_integer(s, "solver", "max_iterations", 1, 100000);
+  optional_number(s, "solver", "optimality_tolerance", 1e-14, 1.0);
+  optional_number(s, "solver", "constraint_tolerance", 1e-14, 1.0);
+  optional_integer(s, "solver", "print_level", 0, 12);
+}
+
+void validate_limits(const nlohmann::json& spec) {
+  if (!spec.contains("limits")) return;
+  const nlohmann::json& l = object_value(spec["limits"], "limits");
+  reject_unknown_keys(l, "limits", kLimitFields);
+  if (l.contains("max_wall_seconds") && number_value(l["max_wall_seconds"], "limits.max_wall_seconds", 0.0,
+                                                     kMaxWallSeconds) <= 0.0)
+    throw SpecError("limits.max_wall_seconds", "must be in (0, 604800], got 0");
+  optional_integer(l, "limits", "max_iterations", 1, kMaxIterationLimit);
+}
+
+}  // namespace
+
+const std::vector<std::string>& known_scenes() {
+  static const std::vector<std::string> v = {"walker", "giant_swing"};
+  return v;
+}
+const std::vector<std::string>& known_tasks() {
+  static const std::vector<std::string> v = {"evaluate", "optimise", "multistart", "continuation", "sweep", "foot_sweep"};
+  return v;
+}
+const std::vector<std::string>& known_objectives() {
+  static const std::vector<std::string> v = {"cost_of_transport", "torque_squared", "energy"};
+  return v;
+}
+
+nlohmann::json parse_job_spec_text(const std::string& text) {
+  nlohmann::json spec;
+  try {
+    spec = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SpecError("spec_json", std::string("malformed JSON: ") + e.what());
+  }
+  if (!spec.is_object()) throw SpecError("spec_json", "must be a JSON object, got " + std::string(spec.type_name()));
+  return spec;
+}
+
+ValidatedJobSpec validate_job_spec(const nlohmann::json& spec, const JobKindRegistry& registry) {
+  if (!spec.is_object()) throw SpecError("spec_json", "must be a JSON object, got " + std::string(spec.type_name()));
+  ValidatedJobSpec v;
+  if (!spec.contains("scene")) throw SpecError("scene", "is required (" + join(known_scenes()) + ")");
+  if (!spec.contains("task")) throw SpecError("task", "is required (" + join(known_tasks()) + ")");
+  v.scene = enum_value(spec["scene"], "scene", known_scenes());
+  v.task = enum_value(spec["task"], "task", known_tasks());
+  v.kind = registry.find(v.task);
+  if (!v.kind) throw SpecError("task", "'" + v.task + "' is not available on this server (available: " + join(registry.tasks()) + ")");
+  if (std::find(v.kind->scenes.begin(), v.kind->scenes.end(), v.scene) == v.kind->scenes.end())
+    throw SpecError("scene", "task '" + v.task + "' needs scene " + join(v.kind->scenes, " or ") + ", got '" + v.scene + "'");
+  std::vector<std::string> fields = kCommonFields;
+  fields.insert(fields.end(), v.kind->fields.begin(), v.kind->fields.end());
+  reject_unknown_keys(spec, "", fields);
+  if (spec.contains("name")) string_value(spec["name"], "name", 200);
+  if (spec.contains("objective")) enum_value(spec["objective"], "objective", known_objectives());
+  validate_solver(spec);
+  validate_limits(spec);
+  v.kind->validate(spec);
+  v.spec = spec;
+  return v;
+}
+
+JobLimits effective_limits(const nlohmann::json& spec, const JobLimits& caps) {
+  JobLimits l = caps;
+  if (!spec.contains("limits")) return l;
+  const nlohmann::json& lim = spec["limits"];
+  if (lim.contains("max_wall_seconds")) l.max_wall_seconds = std::min(caps.max_wall_seconds, lim["max_wall_seconds"].get<double>());
+  if (lim.contains("max_iterations")) l.max_iterations = std::min(caps.max_iterations, lim["max_iterations"].get<int>());
+  return l;
+}
+
+nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec) {
+  nlp::SolverOptions o;
+  if (!spec.contains("solver")) return o;
+  const nlohmann::json& s = spec["solver"];
+  if (s.contains("solver")) o.solver = s["solver"] == "sqp" ? nlp::SolverKind::sqp : nlp::SolverKind::ipopt;
+  o.max_iterations = s.value("max_iterations", o.max_iterations);
+  o.optimality_tolerance = s.value("optimality_tolerance", o.optimality_tolerance);
+  o.constraint_tolerance = s.value("constraint_tolerance", o.constraint_tolerance);
+  o.print_level = s.value("print_level", o.print_level);
+  return o;
+}
+
+}  // namespace cyclopt::service

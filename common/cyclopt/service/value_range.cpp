@@ -1,0 +1,71 @@
+#include "cyclopt/service/value_range.hpp"
+
+#include "cyclopt/service/spec_fields.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cyclopt::service {
+
+namespace {
+
+double parse_number(const std::string& text, const std::string& path, const std::string& syntax) {
+  std::size_t used = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(x))
+    throw SpecError(path, "'" + text + "' is not a number; expected " + syntax);
+  return x;
+}
+
+std::vector<double> parse_colon_range(const std::string& s, const std::string& path) {
+  const std::string syntax = "\"lo:step:hi\" (e.g. \"0.3:0.1:2.3\"), a number or an array of numbers";
+  std::vector<std::string> parts;
+  std::stringstream ss(s);
+  for (std::string part; std::getline(ss, part, ':');) parts.push_back(part);
+  if (parts.size() != 3 || s.back() == ':') throw SpecError(path, "'" + s + "' must be " + syntax);
+  const double lo = parse_number(parts[0], path, syntax);
+  const double step = parse_number(parts[1], path, syntax);
+  const double hi = parse_number(parts[2], path, syntax);
+  if (hi < lo) throw SpecError(path, "'" + s + "': hi must be >= lo");
+  if (!(step > 0.0)) throw SpecError(path, "'" + s + "': step must be > 0");
+  const double n = std::floor((hi - lo) / step + 1e-9) + 1.0;
+  if (n > kMaxGridPoints)
+    throw SpecError(path, "'" + s + "' has " + std::to_string(static_cast<long long>(n)) + " points; at most " +
+                              std::to_string(kMaxGridPoints) + " are allowed");
+  std::vector<double> out;
+  for (int i = 0; i < static_cast<int>(n); ++i) out.push_back(lo + step * i);
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> parse_value_range(const nlohmann::json& v, const std::string& path, double lo, double hi) {
+  std::vector<double> values;
+  if (v.is_string()) {
+    values = parse_colon_range(v.get<std::string>(), path);
+  } else if (v.is_number()) {
+    values.push_back(number_value(v, path, lo, hi));
+  } else if (v.is_array()) {
+    if (v.empty() || v.size() > kMaxGridPoints)
+      throw SpecError(path, "must hold 1 to " + std::to_string(kMaxGridPoints) + " numbers, got " +
+                                std::to_string(v.size()));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      values.push_back(number_value(v[i], path + "[" + std::to_string(i) + "]", lo, hi));
+  } else {
+    throw SpecError(path, "must be \"lo:step:hi\", a number or an array of numbers, got " + v.dump().substr(0, 80));
+  }
+  for (double x : values)
+    if (x < lo - 1e-12 || x > hi + 1e-12) {
+      std::ostringstream os;
+      os << "values must lie in [" << lo << ", " << hi << "], got " << x;
+      throw SpecError(path, os.str());
+    }
+  return values;
+}
+
+}  // namespace cyclopt::service

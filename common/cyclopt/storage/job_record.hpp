@@ -1,0 +1,31 @@
+#pragma once
+// One row of the jobs table (results_schema.hpp) as C++ sees it.
+
+#include "cyclopt/storage/job_state.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace cyclopt::storage {
+
+struct JobRecord {
+  std::int64_t id = 0;
+  std::string request_id;
+  std::string scene;
+  std::string task;
+  std::string spec_json;
+  JobState state = JobState::queued;
+  bool cancel_requested = false;
+  int attempts = 0;
+  double submitted_at = 0.0;          // Unix seconds
+  std::optional<double> started_at;
+  std::optional<double> finished_at;
+  std::optional<int> points_total;
+  int points_stored = 0;              // rows in solutions
+  double run_seconds = 0.0;
+  double publish_seconds = 0.0;
+  std::string error;
+};
+
+}  // namespace cyclopt::storage

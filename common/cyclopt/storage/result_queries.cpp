@@ -1,0 +1,160 @@
+#include "cyclopt/storage/result_queries.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cyclopt::storage {
+
+namespace {
+
+nlohmann::json nullable(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// Rows of `what` (solutions, events, curves, trajectories) belonging to a job.
+int count(ResultStore& store, const std::string& what, std::int64_t job_id) {
+  std::lock_guard lock(store.mutex());
+  Statement q(store.connection(),
+              what == "trajectories"
+                  ? "SELECT count(*) FROM trajectories t JOIN solutions s ON s.id = t.solution_id WHERE s.job_id = ?"
+                  : "SELECT count(*) FROM " + what + " WHERE job_id = ?");
+  q.bind(1, job_id).step();
+  return static_cast<int>(q.int64(0));
+}
+
+// Runs `sql` (parameters: job id, limit, offset) under the store's lock; one JSON row per result
+// row, built by `row`.
+template <class RowFn>
+nlohmann::json paged_rows(ResultStore& store, const char* sql, std::int64_t job_id, int offset, int limit, RowFn row) {
+  std::lock_guard lock(store.mutex());
+  Statement q(store.connection(), sql);
+  q.bind(1, job_id).bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
+  nlohmann::json rows = nlohmann::json::array();
+  while (q.step()) rows.push_back(row(q));
+  return rows;
+}
+
+nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store,
+                    "SELECT curve_index, point_index, parameter, objective, constraint_violation, iterations, status, "
+                    "values_json, solved_at FROM solutions WHERE job_id = ? ORDER BY curve_index, point_index "
+                    "LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"curve", q.int64(0)},
+                                            {"point", q.int64(1)},
+                                            {"parameter", nullable(q.real(2))},
+                                            {"objective", nullable(q.real(3))},
+                                            {"constraint_violation", nullable(q.real(4))},
+                                            {"iterations", q.int64(5)},
+                                            {"status", q.text(6)},
+                                            {"values", nlohmann::json::parse(q.text(7))},
+                                            {"solved_at", q.real(8)}};
+                    });
+}
+
+nlohmann::json trajectory_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store,
+                    "SELECT s.curve_index, s.point_index, t.format, t.data FROM trajectories t JOIN solutions s "
+                    "ON s.id = t.solution_id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index "
+                    "LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"curve", q.int64(0)},
+                                            {"point", q.int64(1)},
+                                            {"format", q.text(2)},
+                                            {"data", q.text(2) == "json" ? nlohmann::json::parse(q.text(3))
+                                                                         : nlohmann::json(q.text(3))}};
+                    });
+}
+
+nlohmann::json event_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store, "SELECT at, kind, message FROM events WHERE job_id = ? ORDER BY id LIMIT ? OFFSET ?", job_id,
+                    offset, limit, [](const Statement& q) {
+                      return nlohmann::json{{"at", q.real(0)}, {"kind", q.text(1)}, {"message", q.text(2)}};
+                    });
+}
+
+nlohmann::json curve_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+  return paged_rows(store,
+                    "SELECT c.curve_index, c.name, c.parameter_name, "
+                    "(SELECT count(*) FROM solutions s WHERE s.job_id = c.job_id AND s.curve_index = c.curve_index) "
+                    "FROM curves c WHERE c.job_id = ? ORDER BY c.curve_index LIMIT ? OFFSET ?",
+                    job_id, offset, limit, [](const Statement& q) {
+                      return nlohmann::json{
+                          {"curve", q.int64(0)}, {"name", q.text(1)}, {"parameter_name", q.text(2)}, {"points", q.int64(3)}};
+                    });
+}
+
+JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
+  std::optional<JobRecord> j = store.job(job_id);
+  if (!j) throw std::invalid_argument("job_id: no job " + std::to_string(job_id));
+  return *j;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const JobRecord& job, bool with_spec) {
+  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  nlohmann::json j = {{"id", job.id},
+                      {"request_id", job.request_id},
+                      {"scene", job.scene},
+                      {"task", job.task},
+                      {"state", to_string(job.state)},
+                      {"cancel_requested", job.cancel_requested},
+                      {"attempts", job.attempts},
+                      {"submitted_at", job.submitted_at},
+                      {"started_at", opt(job.started_at)},
+                      {"finished_at", opt(job.finished_at)},
+                      {"points_total", job.points_total ? nlohmann::json(*job.points_total) : nlohmann::json(nullptr)},
+                      {"points_stored", job.points_stored},
+                      {"run_seconds", job.run_seconds},
+                      {"publish_seconds", job.publish_seconds},
+                      {"error", job.error}};
+  if (with_spec) j["spec"] = nlohmann::json::parse(job.spec_json, nullptr, false);
+  return j;
+}
+
+QueryRequest query_for(std::string what, std::int64_t job_id, std::string state) {
+  QueryRequest r;
+  r.what = std::move(what);
+  r.job_id = job_id;
+  r.state = std::move(state);
+  return r;
+}
+
+QueryPage run_query(ResultStore& store, const QueryRequest& r) {
+  if (r.offset < 0) throw std::invalid_argument("offset: must be >= 0, got " + std::to_string(r.offset));
+  if (r.limit < 1 || r.limit > 1000)
+    throw std::invalid_argument("limit: must be in [1, 1000], got " + std::to_string(r.limit));
+  QueryPage page;
+  if (r.what == "jobs") {
+    std::optional<JobState> state;
+    if (!r.state.empty()) {
+      state = job_state_from_string(r.state);
+      if (!state)
+        throw std::invalid_argument("state: '" + r.state + "' is not one of queued, running, done, failed, cancelled");
+    }
+    page.total = store.count_jobs(state);
+    for (const JobRecord& j : store.jobs(state, r.offset, r.limit)) page.rows.push_back(to_json(j, false));
+    return page;
+  }
+  if (r.what == "job") {
+    page.rows.push_back(to_json(existing_job(store, r.job_id), true));
+    page.total = 1;
+    if (r.offset > 0) page.rows = nlohmann::json::array();
+    return page;
+  }
+  if (r.what != "solutions" && r.what != "events" && r.what != "curves" && r.what != "trajectories")
+    throw std::invalid_argument("what: '" + r.what +
+                                "' is not one of jobs, job, solutions, events, curves, trajectories");
+  existing_job(store, r.job_id);
+  page.total = count(store, r.what, r.job_id);
+  if (r.what == "solutions")
+    page.rows = solution_rows(store, r.job_id, r.offset, r.limit);
+  else if (r.what == "events")
+    page.rows = event_rows(store, r.job_id, r.offset, r.limit);
+  else if (r.what == "curves")
+    page.rows = curve_rows(store, r.job_id, r.offset, r.limit);
+  else
+    page.rows = trajectory_rows(store, r.job_id, r.offset, r.limit);
+  return page;
+}
+
+}  // namespace cyclopt::storage

@@ -1,0 +1,42 @@
+#pragma once
+// The SQLite schema of the results database (version 1). The database runs in WAL mode with
+// synchronous=NORMAL and foreign keys on: every committed point survives a kill -9 of the server.
+//
+//   jobs          one row per accepted submission; also the durable queue.
+//     id            INTEGER PRIMARY KEY   job id shown to users
+//     request_id    TEXT UNIQUE NOT NULL  client-generated; resubmitting it never adds a job
+//     scene, task   TEXT                  copied from the spec ("walker", "foot_sweep", ...)
+//     spec_json     TEXT NOT NULL         the spec as submitted (validated)
+//     state         TEXT                  queued | running | done | failed | cancelled
+//     cancel_requested INTEGER 0/1        set by cancel while running; honoured after a restart
+//     attempts      INTEGER               how often a worker started it (>1 after a resume)
+//     submitted_at, started_at, finished_at  REAL, Unix seconds (UTC)
+//     points_total  INTEGER               announced by the job kind (NULL until known)
+//     run_seconds, publish_seconds  REAL  wall time inside the job kind / CPU time its worker
+//                                         spent publishing progress, summed over attempts
+//                                         (an attempt ended by kill -9 is not counted)
+//     error         TEXT                  why a job failed (NULL otherwise)
+//   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
+//                 requeued, cancel_requested, done, failed, cancelled, interrupted
+//   curves        (id, job_id, curve_index, name, parameter_name), UNIQUE(job_id, curve_index):
+//                 a branch of a continuation, or the single curve of a sweep
+//   solutions     one row per solved point, UNIQUE(job_id, curve_index, point_index) so a resumed
+//                 job can never store a point twice:
+//                 (id, job_id, curve_index, point_index, parameter, objective,
+//                  constraint_violation, iterations, status, values_json, solved_at)
+//   trajectories  (id, solution_id UNIQUE -> solutions.id, format, data BLOB): the time series or
+//                 profile belonging to a solution ("json" = UTF-8 JSON document in the blob)
+//   schema_info   (key, value): "version" = 1
+//
+// Example queries: README.md, section "The service".
+
+#include <string_view>
+
+namespace cyclopt::storage {
+
+inline constexpr int kSchemaVersion = 1;
+
+// DDL creating every table and index (IF NOT EXISTS, so it is idempotent).
+std::string_view results_schema_sql();
+
+}  // namespace cyclopt::storage

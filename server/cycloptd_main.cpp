@@ -1,0 +1,65 @@
+// cycloptd: the cyclopt job server (usage: server_config.hpp, kServerUsage).
+#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "server.hpp"
+#include "server_config.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cyclopt;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (const auto& a : args)
+    if (a == "--help" || a == "-h") {
+      std::fputs(server::kServerUsage, stdout);
+      return 0;
+    }
+  server::ServerConfig config;
+  try {
+    config = server::server_config_from_args(args);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cycloptd: %s\n%s", e.what(), server::kServerUsage);
+    return 1;
+  }
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGINT, &sa, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  lcm::LCM lcm(config.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "cycloptd: cannot open LCM at '%s'\n", config.lcm_url.c_str());
+    return 2;
+  }
+  const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  try {
+    server::Server srv(config, kinds, lcm);
+    std::fprintf(stderr, "cycloptd: database %s, %d workers, tasks:", config.database.c_str(),
+                 server::effective_workers(config));
+    for (const auto& t : kinds.tasks()) std::fprintf(stderr, " %s", t.c_str());
+    std::fprintf(stderr, "; re-queued %d interrupted job(s), cancelled %d\n", srv.recovery().requeued,
+                 srv.recovery().cancelled);
+    srv.serve(g_stop);
+    const auto& c = srv.counters();
+    const long submissions = c.accepted + c.duplicates + c.rejected;
+    std::fprintf(stderr,
+                 "cycloptd: stopping (accepted %ld, duplicates %ld, rejected %ld, queries %ld; "
+                 "%.3f ms per submission handled)\n",
+                 c.accepted.load(), c.duplicates.load(), c.rejected.load(), c.queries.load(),
+                 submissions > 0 ? 1e3 * c.submit_seconds / submissions : 0.0);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cycloptd: %s\n", e.what());
+    return 2;
+  }
+  std::fprintf(stderr, "cycloptd: stopped cleanly\n");
+  return 0;
+}

@@ -1,0 +1,94 @@
+#include "worker_job_context.hpp"
+
+#include <cyclopt_lcm/job_progress_t.hpp>
+
+#include "cyclopt_channels.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace cyclopt::server {
+
+WorkerJobContext::WorkerJobContext(const storage::JobRecord& job, const service::JobLimits& limits, double progress_hz,
+                                   storage::ResultStore& store, LcmPublisher& publisher,
+                                   const std::atomic<bool>& cancel, const std::atomic<bool>& shutdown)
+    : job_(job),
+      limits_(limits),
+      min_interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(1.0 / progress_hz))),
+      store_(store),
+      publisher_(publisher),
+      cancel_(cancel),
+      shutdown_(shutdown),
+      points_stored_(job.points_stored),
+      points_at_start_(job.points_stored) {}
+
+double WorkerJobContext::elapsed_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void WorkerJobContext::announce(int points_total) {
+  points_total_ = points_total;
+  store_.set_points_total(job_.id, points_total);
+}
+
+void WorkerJobContext::add_curve(int curve_index, const std::string& name, const std::string& parameter_name) {
+  store_.add_curve(job_.id, curve_index, name, parameter_name);
+}
+
+bool WorkerJobContext::store_point(const storage::SolutionPoint& point) {
+  const bool added = store_.store_point(job_.id, point);
+  if (added) ++points_stored_;
+  return added;
+}
+
+std::set<storage::PointKey> WorkerJobContext::already_stored_points() { return store_.stored_points(job_.id); }
+
+service::StopReason WorkerJobContext::stop_reason() {
+  if (cancel_.load()) return service::StopReason::cancelled;
+  if (shutdown_.load()) return service::StopReason::shutdown;
+  if (elapsed_seconds() + job_.run_seconds > limits_.max_wall_seconds) return service::StopReason::time_limit;
+  if (iterations_ >= limits_.max_iterations) return service::StopReason::iteration_limit;
+  return service::StopReason::none;
+}
+
+void WorkerJobContext::report_progress(const service::ProgressReport& report) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_publish_ < min_interval_) {
+    pending_ = report;
+    return;
+  }
+  publish(report);
+}
+
+void WorkerJobContext::flush_progress() {
+  if (pending_) publish(*pending_);
+}
+
+void WorkerJobContext::publish(const service::ProgressReport& r) {
+  const auto now = std::chrono::steady_clock::now();
+  pending_.reset();
+  last_publish_ = now;
+  cyclopt_lcm::job_progress_t m;
+  m.job_id = job_.id;
+  m.request_id = job_.request_id;
+  m.task = job_.task;
+  m.timestamp_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                       std::chrono::system_clock::now().time_since_epoch()).count();
+  m.iteration = r.iteration;
+  m.objective = r.objective;
+  m.constraint_violation = r.constraint_violation;
+  m.parameter = r.parameter;
+  m.curve_id = r.curve_id;
+  m.points_done = r.points_done;
+  m.points_total = r.points_total >= 0 ? r.points_total : points_total_;
+  m.percent = m.points_total > 0 ? 100.0 * m.points_done / m.points_total : std::numeric_limits<double>::quiet_NaN();
+  const int solved_now = m.points_done - points_at_start_;
+  m.eta_seconds = solved_now > 0 && m.points_total > 0
+                      ? elapsed_seconds() / solved_now * (m.points_total - m.points_done)
+                      : std::numeric_limits<double>::quiet_NaN();
+  m.message = r.message;
+  publish_seconds_ += publisher_.publish(channels::kProgress, m);
+}
+
+}  // namespace cyclopt::server

@@ -1,0 +1,60 @@
+#pragma once
+// The JobContext a worker hands to a job kind: commits points to the store, publishes progress
+// at most progress_hz times per second, and answers stop_reason() from the cancel flag, the
+// server's shutdown flag and the job's time and iteration limits.
+
+#include "cyclopt/service/job_context.hpp"
+#include "cyclopt/storage/job_record.hpp"
+#include "cyclopt/storage/result_store.hpp"
+#include "lcm_publisher.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <optional>
+
+namespace cyclopt::server {
+
+class WorkerJobContext final : public service::JobContext {
+ public:
+  WorkerJobContext(const storage::JobRecord& job, const service::JobLimits& limits, double progress_hz,
+                   storage::ResultStore& store, LcmPublisher& publisher, const std::atomic<bool>& cancel,
+                   const std::atomic<bool>& shutdown);
+
+  std::int64_t job_id() const override { return job_.id; }
+  const service::JobLimits& limits() const override { return limits_; }
+  void report_progress(const service::ProgressReport& report) override;
+  void count_iterations(int n) override { iterations_ += n; }
+  void announce(int points_total) override;
+  void add_curve(int curve_index, const std::string& name, const std::string& parameter_name) override;
+  bool store_point(const storage::SolutionPoint& point) override;
+  std::set<storage::PointKey> already_stored_points() override;
+  service::StopReason stop_reason() override;
+
+  // Publishes the last report if rate limiting held it back.
+  void flush_progress();
+  double elapsed_seconds() const;
+  double publish_seconds() const { return publish_seconds_; }
+  int points_stored() const { return points_stored_; }
+  bool complete() const { return points_total_ >= 0 && points_stored_ >= points_total_; }
+
+ private:
+  void publish(const service::ProgressReport& report);
+
+  const storage::JobRecord& job_;
+  service::JobLimits limits_;
+  std::chrono::steady_clock::duration min_interval_;
+  storage::ResultStore& store_;
+  LcmPublisher& publisher_;
+  const std::atomic<bool>& cancel_;
+  const std::atomic<bool>& shutdown_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_publish_{};
+  std::optional<service::ProgressReport> pending_;
+  long long iterations_ = 0;
+  int points_total_ = -1;
+  int points_stored_ = 0;
+  int points_at_start_ = 0;  // stored by earlier attempts
+  double publish_seconds_ = 0.0;
+};
+
+}  // namespace cyclopt::server

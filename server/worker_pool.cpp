@@ -1,0 +1,120 @@
+#include "worker_pool.hpp"
+
+#include <cyclopt_lcm/job_done_t.hpp>
+
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt_channels.hpp"
+#include "worker_job_context.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace cyclopt::server {
+
+WorkerPool::WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+                       LcmPublisher& publisher)
+    : config_(config), kinds_(kinds), store_(store), publisher_(publisher) {
+  for (int i = 0; i < effective_workers(config); ++i) threads_.emplace_back([this] { work(); });
+}
+
+WorkerPool::~WorkerPool() {
+  stop();
+  for (auto& t : threads_) t.join();
+}
+
+void WorkerPool::wake() { wake_.notify_all(); }
+
+void WorkerPool::cancel(std::int64_t job_id) {
+  std::lock_guard lock(mutex_);
+  const auto it = cancel_flags_.find(job_id);
+  if (it != cancel_flags_.end())
+    *it->second = true;
+  else
+    early_cancels_.insert(job_id);  // claimed, but run_job has not registered it yet
+}
+
+void WorkerPool::stop() {
+  shutdown_ = true;
+  wake_.notify_all();
+}
+
+void WorkerPool::work() {
+  while (!shutdown_) {
+    std::optional<storage::JobRecord> job;
+    try {
+      job = store_.claim_next();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "cycloptd: cannot claim a job: %s\n", e.what());
+    }
+    if (!job) {
+      std::unique_lock lock(mutex_);
+      wake_.wait_for(lock, std::chrono::milliseconds(200));
+      continue;
+    }
+    run_job(*job);
+  }
+}
+
+void WorkerPool::run_job(const storage::JobRecord& job) {
+  auto cancel = std::make_shared<std::atomic<bool>>(job.cancel_requested);
+  {
+    std::lock_guard lock(mutex_);
+    cancel_flags_[job.id] = cancel;
+    if (early_cancels_.erase(job.id)) *cancel = true;
+  }
+  const nlohmann::json spec = nlohmann::json::parse(job.spec_json, nullptr, false);
+  WorkerJobContext ctx(job, service::effective_limits(spec, config_.caps), config_.progress_hz, store_, publisher_,
+                       *cancel, shutdown_);
+  std::string error;
+  try {
+    const service::JobKind* kind = kinds_.find(job.task);
+    if (!kind) throw std::runtime_error("task '" + job.task + "' is not available on this server");
+    kind->run(spec, ctx);
+  } catch (const std::exception& e) {
+    error = e.what();
+  } catch (...) {
+    error = "task '" + job.task + "' failed with a non-standard exception";
+  }
+  ctx.flush_progress();
+  const double run_seconds = ctx.elapsed_seconds();
+  const service::StopReason stop = ctx.stop_reason();
+  storage::JobState state = storage::JobState::done;
+  if (!error.empty()) {
+    state = storage::JobState::failed;
+  } else if (stop == service::StopReason::cancelled) {
+    state = storage::JobState::cancelled;
+  } else if (stop == service::StopReason::time_limit || stop == service::StopReason::iteration_limit) {
+    if (!ctx.complete()) {
+      state = storage::JobState::failed;
+      error = stop == service::StopReason::time_limit
+                  ? "limits.max_wall_seconds: exceeded " + std::to_string(ctx.limits().max_wall_seconds) + " s"
+                  : "limits.max_iterations: exceeded " + std::to_string(ctx.limits().max_iterations);
+    }
+  }
+  {
+    std::lock_guard lock(mutex_);
+    cancel_flags_.erase(job.id);
+  }
+  try {
+    if (stop == service::StopReason::shutdown && error.empty()) {
+      store_.return_to_queue(job.id, run_seconds, ctx.publish_seconds(), "server shutdown; resumes at next start");
+      return;
+    }
+    store_.finish(job.id, state, error, run_seconds, ctx.publish_seconds());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cycloptd: cannot record the end of job %lld: %s\n", static_cast<long long>(job.id), e.what());
+    return;
+  }
+  cyclopt_lcm::job_done_t done;
+  done.job_id = job.id;
+  done.request_id = job.request_id;
+  done.state = std::string(storage::to_string(state));
+  done.points_stored = ctx.points_stored();
+  done.run_seconds = run_seconds;
+  done.publish_seconds = ctx.publish_seconds();
+  done.error = error;
+  publisher_.publish(channels::kDone, done);
+}
+
+}  // namespace cyclopt::server

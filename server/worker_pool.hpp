@@ -1,0 +1,48 @@
+#pragma once
+// One thread per worker. Each claims the oldest queued job from the store, runs its kind with a
+// WorkerJobContext and records the outcome: done, failed (exception or limit), cancelled, or
+// back to queued when the server shuts down (its stored points are kept; it resumes later).
+
+#include "cyclopt/service/job_kind.hpp"
+#include "cyclopt/storage/result_store.hpp"
+#include "lcm_publisher.hpp"
+#include "server_config.hpp"
+
+#include <atomic>
+#include <condition_variable>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+namespace cyclopt::server {
+
+class WorkerPool {
+ public:
+  WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+             LcmPublisher& publisher);
+  ~WorkerPool();  // stop() and join
+
+  void wake();                          // a job was queued
+  void cancel(std::int64_t job_id);     // raises the flag of a running job
+  void stop();                          // running jobs checkpoint and return to the queue
+
+ private:
+  void work();
+  void run_job(const storage::JobRecord& job);
+
+  const ServerConfig& config_;
+  const service::JobKindRegistry& kinds_;
+  storage::ResultStore& store_;
+  LcmPublisher& publisher_;
+  std::atomic<bool> shutdown_{false};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::map<std::int64_t, std::shared_ptr<std::atomic<bool>>> cancel_flags_;  // running jobs
+  std::set<std::int64_t> early_cancels_;  // cancelled after being claimed, before their flag existed
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace cyclopt::server

@@ -1,0 +1,98 @@
+// Job-spec validation: value ranges, common fields, the foot_sweep kind; every error names its
+// field.
+#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/value_range.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cyclopt::service {
+namespace {
+
+// The field named by the SpecError `f` throws ("" if it does not throw).
+template <class F>
+std::string failing_field(F&& f) {
+  try {
+    f();
+  } catch (const SpecError& e) {
+    return e.field();
+  }
+  return "";
+}
+
+nlohmann::json sweep_spec() {
+  return {{"scene", "walker"},
+          {"task", "foot_sweep"},
+          {"foot", "P2-shoes-left-HMT"},
+          {"sweep", {{"parameter", "density"}, {"values", "20:10:60"}}}};
+}
+
+TEST(ValueRange, ColonSyntaxIncludesTheEnd) {
+  const auto v = parse_value_range("0.3:0.1:2.3", "speeds", 0.0, 5.0);
+  ASSERT_EQ(v.size(), 21u);
+  EXPECT_NEAR(v.back(), 2.3, 1e-12);
+  EXPECT_EQ(parse_value_range(1.5, "speeds", 0.0, 5.0), std::vector<double>{1.5});
+  EXPECT_EQ(parse_value_range(nlohmann::json::array({1, 2}), "speeds", 0.0, 5.0), (std::vector<double>{1, 2}));
+}
+
+TEST(ValueRange, RejectsBadGrids) {
+  for (const nlohmann::json& bad : {nlohmann::json("1:2"), nlohmann::json("a:0.1:2"), nlohmann::json("2:0.1:1"),
+                                    nlohmann::json("1:0:2"), nlohmann::json("0:1e-9:1"), nlohmann::json("0:1:9"),
+                                    nlohmann::json::array(), nlohmann::json(true)})
+    EXPECT_EQ(failing_field([&] { parse_value_range(bad, "speeds", 0.0, 5.0); }), "speeds") << bad.dump();
+}
+
+TEST(JobSpec, AcceptsAFootSweep) {
+  const JobKindRegistry kinds = builtin_job_kinds();
+  const ValidatedJobSpec v = validate_job_spec(sweep_spec(), kinds);
+  EXPECT_EQ(v.task, "foot_sweep");
+  EXPECT_EQ(v.kind, kinds.find("foot_sweep"));
+}
+
+TEST(JobSpec, ErrorsNameTheField) {
+  const JobKindRegistry kinds = builtin_job_kinds();
+  auto field_of = [&](const nlohmann::json& spec) { return failing_field([&] { validate_job_spec(spec, kinds); }); };
+  auto with = [](const std::string& ptr, const nlohmann::json& value) {
+    nlohmann::json s = sweep_spec();
+    s[nlohmann::json::json_pointer(ptr)] = value;
+    return s;
+  };
+  EXPECT_EQ(field_of(with("/scene", "robot")), "scene");
+  EXPECT_EQ(field_of(with("/scene", "giant_swing")), "scene");
+  EXPECT_EQ(field_of(with("/task", "optimise")), "task");  // not available yet
+  EXPECT_EQ(field_of(with("/task", 3)), "task");
+  EXPECT_EQ(field_of(with("/colour", "red")), "colour");
+  EXPECT_EQ(field_of(with("/limits/max_wall_seconds", -1)), "limits.max_wall_seconds");
+  EXPECT_EQ(field_of(with("/limits/max_iterations", 1.5)), "limits.max_iterations");
+  EXPECT_EQ(field_of(with("/solver/solver", "newton")), "solver.solver");
+  EXPECT_EQ(field_of(with("/objective", "speed")), "objective");
+  EXPECT_EQ(field_of(with("/foot", "no-such-foot")), "foot");
+  EXPECT_EQ(field_of(with("/foot", nlohmann::json{{"model", "HM"}, {"h_F", 0.08}})), "foot.l_HA");
+  EXPECT_EQ(field_of(with("/sweep/parameter", "gamma_F_typo")), "sweep.parameter");
+  EXPECT_EQ(field_of(with("/sweep/values", "0:10:2000")), "sweep.values");
+  EXPECT_EQ(field_of(with("/point_delay_ms", 20000)), "point_delay_ms");
+  // Grid values that make an invalid foot are caught before the job is queued.
+  nlohmann::json s = with("/sweep/parameter", "l_HA");
+  s["sweep"]["values"] = "0.05:0.1:0.95";
+  EXPECT_EQ(field_of(s), "sweep.values[2]");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text("{\"scene\": "); }), "spec_json");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text("[1, 2]"); }), "spec_json");
+  // Deep nesting within the 16 KiB limit neither overflows the stack nor passes.
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(std::string(16000, '[')); }), "spec_json");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(std::string(8000, '[') + std::string(8000, ']')); }), "spec_json");
+  const std::string deep = "{\"scene\": \"walker\", \"task\": \"foot_sweep\", \"foot\": " + std::string(7000, '[') +
+                           std::string(7000, ']') + "}";
+  EXPECT_EQ(failing_field([&] { validate_job_spec(parse_job_spec_text(deep), builtin_job_kinds()); }), "foot");
+}
+
+TEST(JobSpec, LimitsAreCappedByTheServer) {
+  nlohmann::json s = sweep_spec();
+  s["limits"] = {{"max_wall_seconds", 10.0}, {"max_iterations", 1000000}};
+  const JobLimits l = effective_limits(s, {.max_wall_seconds = 60.0, .max_iterations = 500});
+  EXPECT_EQ(l.max_wall_seconds, 10.0);
+  EXPECT_EQ(l.max_iterations, 500);
+}
+
+}  // namespace
+}  // namespace cyclopt::service

@@ -1,0 +1,185 @@
+// The server and a client in one process over memq:// (no network): submission, idempotency,
+// progress rate, paged queries, cancellation, limits, rejection of bad messages, and resume
+// after a shutdown in the middle of a sweep.
+#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt_channels.hpp"
+#include "server.hpp"
+#include "service_client.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace cyclopt {
+namespace {
+
+std::string sweep(int points, int delay_ms, int samples = 13) {
+  nlohmann::json s = {{"scene", "walker"},
+                      {"task", "foot_sweep"},
+                      {"foot", "P2-shoes-left-HMT"},
+                      {"samples", samples},
+                      {"point_delay_ms", delay_ms},
+                      {"sweep", {{"parameter", "density"}, {"values", "1:1:" + std::to_string(points)}}}};
+  return s.dump();
+}
+
+class ServerMemq : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("cyclopt_memq_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+    config_.database = (dir_ / "results.db").string();
+    config_.workers = 2;
+    ASSERT_TRUE(lcm_.good());
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  cyclopt_lcm::job_ack_t submit(const std::string& id, const std::string& spec) {
+    const auto ack = client_.submit(id, spec, 5.0);
+    EXPECT_TRUE(ack);
+    return ack.value_or(cyclopt_lcm::job_ack_t{});
+  }
+
+  std::filesystem::path dir_;
+  server::ServerConfig config_;
+  service::JobKindRegistry kinds_ = service::builtin_job_kinds();
+  lcm::LCM lcm_{"memq://"};
+  client::ServiceClient client_{lcm_};
+};
+
+TEST_F(ServerMemq, SubmitWatchAndQuery) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("req-1", sweep(50, 20));
+  ASSERT_TRUE(ack.accepted) << ack.problem;
+  EXPECT_FALSE(ack.duplicate);
+  int progress = 0;
+  double last_percent = 0.0;
+  const auto done = client_.watch(ack.job_id, [&](const cyclopt_lcm::job_progress_t& p) {
+    ++progress;
+    EXPECT_GE(p.percent, last_percent);
+    last_percent = p.percent;
+  }, 20.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "done");
+  EXPECT_EQ(done->points_stored, 50);
+  // 50 points x 20 ms = 1 s at 5 Hz: a handful of messages, not one per point.
+  EXPECT_GE(progress, 2);
+  EXPECT_LE(progress, 10);
+  EXPECT_DOUBLE_EQ(last_percent, 100.0);
+  const auto dup = submit("req-1", sweep(50, 20));
+  EXPECT_TRUE(dup.accepted);
+  EXPECT_TRUE(dup.duplicate);
+  EXPECT_EQ(dup.job_id, ack.job_id);
+  const auto page = client_.query(storage::query_for("solutions", ack.job_id), 5.0);
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->rows.size(), 50u);
+  EXPECT_EQ(client_.query(storage::query_for("jobs"), 5.0)->total, 1);
+  const auto trajectories = client_.query(storage::query_for("trajectories", ack.job_id), 5.0);
+  ASSERT_TRUE(trajectories);
+  ASSERT_EQ(trajectories->rows.size(), 50u);
+  EXPECT_EQ(trajectories->rows[0]["data"].size(), 13u);  // the rolling samples of the point
+}
+
+TEST_F(ServerMemq, LargeResultsArriveInSeveralPages) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("big", sweep(400, 0));
+  ASSERT_TRUE(client_.watch(ack.job_id, [](const auto&) {}, 20.0));
+  storage::QueryRequest r = storage::query_for("solutions", ack.job_id);
+  r.limit = 1000;
+  const auto page = client_.query(r, 10.0);
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->rows.size(), 400u);
+  EXPECT_EQ(page->rows.back()["point"], 399);
+}
+
+TEST_F(ServerMemq, EveryBadMessageIsRejectedByName) {
+  server::Server srv(config_, kinds_, lcm_);
+  const std::string garbage = "\x01\x02not an lcm message at all";
+  const auto g = client_.send_raw(channels::kSubmit, garbage, "", 5.0);
+  ASSERT_TRUE(g);
+  EXPECT_FALSE(g->accepted);
+  EXPECT_EQ(g->field, channels::kSubmit);
+  const auto c = client_.send_raw(channels::kCancel, garbage, "", 5.0);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->field, channels::kCancel);
+  struct Case {
+    std::string id, spec, field;
+  };
+  const std::vector<Case> cases = {
+      {"m1", "{\"scene\": \"walker\", ", "spec_json"},
+      {"m2", "42", "spec_json"},
+      {"m3", R"({"scene": 7, "task": "foot_sweep"})", "scene"},
+      {"m4", R"({"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "sweep": {"parameter": "k_HM", "values": "0:0.5:5"}})", "sweep.values"},
+      {"m5", std::string(channels::kMaxSpecBytes + 1, ' '), "spec_json"},
+      {std::string(100, 'x'), sweep(2, 0), "request_id"},
+      {"has space", sweep(2, 0), "request_id"},
+  };
+  for (const Case& k : cases) {
+    const auto ack = submit(k.id, k.spec);
+    EXPECT_FALSE(ack.accepted) << k.id;
+    EXPECT_EQ(ack.field, k.field) << ack.problem;
+    EXPECT_NE(ack.problem.find(k.field), std::string::npos) << ack.problem;
+  }
+  EXPECT_EQ(srv.counters().rejected, 2 + static_cast<long>(cases.size()));
+  EXPECT_EQ(srv.store().count_jobs(std::nullopt), 0);
+  // Same request id, different spec: refused rather than silently ignored.
+  ASSERT_TRUE(submit("same", sweep(2, 0)).accepted);
+  const auto clash = submit("same", sweep(3, 0));
+  EXPECT_FALSE(clash.accepted);
+  EXPECT_EQ(clash.field, "request_id");
+}
+
+TEST_F(ServerMemq, CancelStopsARunningJob) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("slow", sweep(200, 20));
+  while (srv.store().job(ack.job_id)->points_stored < 3) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const auto c = client_.cancel(ack.job_id, 5.0);
+  ASSERT_TRUE(c);
+  EXPECT_TRUE(c->accepted) << c->problem;
+  const auto done = client_.watch(ack.job_id, [](const auto&) {}, 20.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "cancelled");
+  EXPECT_LT(done->points_stored, 200);
+  const auto again = client_.cancel(ack.job_id, 5.0);
+  ASSERT_TRUE(again);
+  EXPECT_FALSE(again->accepted);
+}
+
+TEST_F(ServerMemq, TimeLimitFailsTheJobNamingTheLimit) {
+  config_.caps.max_wall_seconds = 0.3;
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("long", sweep(100, 20));
+  const auto done = client_.watch(ack.job_id, [](const auto&) {}, 20.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "failed");
+  EXPECT_NE(done->error.find("limits.max_wall_seconds"), std::string::npos) << done->error;
+}
+
+TEST_F(ServerMemq, ShutdownMidSweepResumesWithoutDuplicates) {
+  constexpr int kPoints = 60;
+  std::int64_t job = 0;
+  {
+    server::Server srv(config_, kinds_, lcm_);
+    job = submit("resume", sweep(kPoints, 20)).job_id;
+    while (srv.store().job(job)->points_stored < 10) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }  // graceful stop: the job goes back to the queue
+  {
+    storage::ResultStore s(config_.database);
+    const auto j = s.job(job);
+    EXPECT_EQ(j->state, storage::JobState::queued);
+    EXPECT_GE(j->points_stored, 10);
+    EXPECT_LT(j->points_stored, kPoints);
+  }
+  server::Server srv(config_, kinds_, lcm_);
+  const auto done = client_.watch(job, [](const auto&) {}, 20.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "done");
+  const auto j = srv.store().job(job);
+  EXPECT_EQ(j->points_stored, kPoints);
+  EXPECT_EQ(j->attempts, 2);
+}
+
+}  // namespace
+}  // namespace cyclopt
