@@ -1,0 +1,65 @@
+#pragma once
+// The walker's optimisation problem of seed 001 section 5.4 as an nlp::Problem:
+//
+//   min_z f(z)  s.t.  c_g(z) = 0 (5.103),  c_u(z) <= 0 (5.104),  z = [x; p_free],
+//
+// where x = alpha_tilde are the gait parameters (5.92) and p_free an optional, named subset of the
+// model parameters p_mod (5.91) optimised together with the gait (foot-geometry co-optimisation,
+// section 10.2). Free foot parameters add the convexity conditions (3.21 / 3.24, and the HMT toe
+// margin) as inequalities and their admissible ranges as bounds. A gait without a real periodic
+// solution (5.87) is an evaluation failure, which every solver treats as "step too long".
+
+#include "cyclopt/foot/convexity_constraints.hpp"
+#include "cyclopt/nlp/problem.hpp"
+#include "cyclopt/walker/gait_evaluation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace cyclopt::walker {
+
+struct GaitProblemOptions {
+  Objective objective = Objective::mechanical;
+  double speed = 1.3;                          // v_bar (m/s)
+  Quadrature quadrature = Quadrature::trapezoid;
+  std::vector<std::string> free_parameters;    // names from model_parameter_names(), e.g. {"l_HM", "k_HM"}
+};
+
+class GaitProblem : public nlp::Problem {
+ public:
+  // Throws std::invalid_argument naming an unknown free parameter (with the valid names).
+  GaitProblem(const WalkerModel<double>& model, GaitProblemOptions options);
+
+  int num_variables() const override;
+  int num_equalities() const override { return 1; }
+  int num_inequalities() const override;
+  Eigen::VectorXd lower_bounds() const override;
+  Eigen::VectorXd upper_bounds() const override;
+  nlp::EvaluationStatus evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out) override;
+  std::string variable_name(int i) const override;
+  std::string constraint_name(bool equality, int i) const override;
+
+  // z from gait parameters x and the model's current values of the free parameters, and back.
+  Eigen::VectorXd initial_point(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd gait_parameters(const Eigen::VectorXd& z) const { return z.head(gait_count_); }
+  // The model with the free parameters taken from z.
+  WalkerModel<double> model_at(const Eigen::VectorXd& z) const;
+  // The full gait (with trajectories) at z.
+  PeriodicGait<double> gait_at(const Eigen::VectorXd& z) const;
+  const GaitProblemOptions& options() const { return options_; }
+
+ private:
+  GaitOptions gait_options(bool trajectories) const;
+  int foot_constraint_count() const;
+
+  WalkerModel<double> model_;
+  GaitEvaluator evaluator_;  // at the base model; rebuilt per evaluation when parameters are free
+  GaitProblemOptions options_;
+  int gait_count_ = 0;
+  std::vector<int> free_indices_;       // into p_mod
+  std::vector<std::string> parameter_names_;
+  foot::LinearInequalities convexity_;  // rows restricted to problems with free foot parameters
+  bool toe_margin_ = false;
+};
+
+}  // namespace cyclopt::walker
