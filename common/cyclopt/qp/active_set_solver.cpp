@@ -1,0 +1,422 @@
+#include "cyclopt/qp/active_set_solver.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace cyclopt::qp {
+namespace {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A row is independent of the working set if its component orthogonal to it exceeds this
+// fraction of its norm; a constraint blocks a step if a'p exceeds this fraction of |a||p|.
+constexpr double kDependenceTolerance = 1e-9;
+constexpr double kDirectionTolerance = 1e-12;
+// A subspace Newton step below this (relative to max(1, |x|_inf)) is rounding noise.
+constexpr double kStationaryStep = 1e-13;
+
+// A_in rows, then finite upper bounds (x_i <= u_i), then finite lower bounds (-x_i <= -l_i):
+// every inequality-type constraint as one row of C x <= c.
+enum class RowKind { inequality, upper_bound, lower_bound };
+struct RowOrigin {
+  RowKind kind;
+  int index;  // row of A_in, or variable index
+};
+
+struct StackedInequalities {
+  MatrixXd matrix;
+  VectorXd rhs;
+  std::vector<RowOrigin> origin;
+};
+
+StackedInequalities stack_inequalities(const QuadraticProgram& qp) {
+  const Index n = qp.num_variables();
+  std::vector<RowOrigin> origin;
+  for (Index i = 0; i < qp.inequality_matrix.rows(); ++i) origin.push_back({RowKind::inequality, static_cast<int>(i)});
+  for (Index i = 0; i < qp.upper_bounds.size(); ++i)
+    if (std::isfinite(qp.upper_bounds[i])) origin.push_back({RowKind::upper_bound, static_cast<int>(i)});
+  for (Index i = 0; i < qp.lower_bounds.size(); ++i)
+    if (std::isfinite(qp.lower_bounds[i])) origin.push_back({RowKind::lower_bound, static_cast<int>(i)});
+  StackedInequalities s{MatrixXd::Zero(static_cast<Index>(origin.size()), n), VectorXd(static_cast<Index>(origin.size())), origin};
+  for (Index r = 0; r < s.matrix.rows(); ++r) {
+    const RowOrigin& o = origin[static_cast<size_t>(r)];
+    switch (o.kind) {
+      case RowKind::inequality:
+        s.matrix.row(r) = qp.inequality_matrix.row(o.index);
+        s.rhs[r] = qp.inequality_rhs[o.index];
+        break;
+      case RowKind::upper_bound:
+        s.matrix(r, o.index) = 1.0;
+        s.rhs[r] = qp.upper_bounds[o.index];
+        break;
+      case RowKind::lower_bound:
+        s.matrix(r, o.index) = -1.0;
+        s.rhs[r] = -qp.lower_bounds[o.index];
+        break;
+    }
+  }
+  return s;
+}
+
+// Orthonormal basis of the span of accepted rows (twice-iterated Gram-Schmidt), to keep a
+// working set linearly independent.
+class RowSpan {
+ public:
+  bool try_add(const VectorXd& row) {
+    const double norm = row.norm();
+    if (norm == 0.0) return false;
+    VectorXd r = row;
+    for (int pass = 0; pass < 2; ++pass)
+      for (const VectorXd& q : basis_) r -= q.dot(r) * q;
+    const double residual = r.norm();
+    if (residual <= kDependenceTolerance * norm) return false;
+    basis_.push_back(r / residual);
+    return true;
+  }
+
+ private:
+  std::vector<VectorXd> basis_;
+};
+
+// The constraints of one active-set run: E x = e (rows eq_rows are held), C x <= c.
+struct LinearConstraints {
+  const MatrixXd& E;
+  const VectorXd& e;
+  const MatrixXd& C;
+  const VectorXd& c;
+};
+
+// QR of the working-set matrix' A_W' = [Q1 Q2] [R; 0]: Q2 spans the null space of A_W.
+struct WorkingFactorization {
+  MatrixXd Q;
+  MatrixXd R;
+  Index w = 0;
+
+  explicit WorkingFactorization(const MatrixXd& working_transposed) : w(working_transposed.cols()) {
+    const Index n = working_transposed.rows();
+    if (w == 0) {
+      Q = MatrixXd::Identity(n, n);
+      return;
+    }
+    Eigen::HouseholderQR<MatrixXd> qr(working_transposed);
+    Q = qr.householderQ() * MatrixXd::Identity(n, n);
+    R = qr.matrixQR().topRows(w).triangularView<Eigen::Upper>();
+  }
+  MatrixXd null_space() const { return Q.rightCols(Q.cols() - w); }
+  // Multipliers y with A_W' y = -grad (exact when grad is in the range of A_W').
+  VectorXd multipliers(const VectorXd& grad) const {
+    if (w == 0) return VectorXd();
+    return R.triangularView<Eigen::Upper>().solve(-(Q.leftCols(w).transpose() * grad));
+  }
+  // Minimum-norm x with A_W x = b: x = Q1 R^-T b.
+  VectorXd particular_solution(const VectorXd& b) const {
+    if (w == 0) return VectorXd::Zero(Q.rows());
+    return Q.leftCols(w) * R.transpose().triangularView<Eigen::Lower>().solve(b);
+  }
+};
+
+struct SubspaceStep {
+  VectorXd p;
+  bool ray = false;  // zero-curvature descent direction: no natural step length
+};
+
+// Minimises the quadratic model over x + null(A_W): Newton step on the positive-curvature part of
+// the reduced Hessian; if the reduced gradient has a component of zero curvature, that component
+// (negated) is a descent ray instead.
+SubspaceStep subspace_step(const MatrixXd& H, const VectorXd& grad, const MatrixXd& Z, double curvature_threshold,
+                           double gradient_threshold) {
+  SubspaceStep step{VectorXd::Zero(grad.size()), false};
+  if (Z.cols() == 0) return step;
+  const Eigen::SelfAdjointEigenSolver<MatrixXd> eigen(Z.transpose() * H * Z);
+  const VectorXd coefficients = eigen.eigenvectors().transpose() * (Z.transpose() * grad);
+  VectorXd newton = VectorXd::Zero(Z.cols());
+  VectorXd flat = VectorXd::Zero(Z.cols());
+  for (Index k = 0; k < Z.cols(); ++k) {
+    const double curvature = eigen.eigenvalues()[k];
+    if (curvature > curvature_threshold)
+      newton[k] = -coefficients[k] / curvature;
+    else
+      flat[k] = coefficients[k];
+  }
+  if (flat.norm() > gradient_threshold) {
+    step.p = -Z * (eigen.eigenvectors() * flat);
+    step.ray = true;
+  } else {
+    step.p = Z * (eigen.eigenvectors() * newton);
+  }
+  return step;
+}
+
+MatrixXd working_transposed(const LinearConstraints& lc, const std::vector<int>& eq_rows, const std::vector<int>& working) {
+  MatrixXd at(lc.E.cols(), static_cast<Index>(eq_rows.size() + working.size()));
+  Index col = 0;
+  for (int r : eq_rows) at.col(col++) = lc.E.row(r).transpose();
+  for (int r : working) at.col(col++) = lc.C.row(r).transpose();
+  return at;
+}
+
+struct RunOutcome {
+  QpStatus status = QpStatus::max_iterations;
+  int iterations = 0;
+  VectorXd eq_multipliers;  // per E row
+  VectorXd in_multipliers;  // per C row
+};
+
+// Primal active-set iteration from a feasible x with independent working set. Stops early
+// (status optimal, no multipliers) once the objective falls to stop_objective (phase 1).
+RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearConstraints& lc, const std::vector<int>& eq_rows,
+                          std::vector<int>& working, VectorXd& x, const ActiveSetOptions& options, int max_iterations,
+                          double stop_objective) {
+  const Index n = x.size();
+  const double curvature_threshold = options.curvature_tolerance * std::max(1.0, H.size() ? H.cwiseAbs().maxCoeff() : 0.0);
+  const VectorXd row_norms = lc.C.rowwise().norm();
+  std::vector<char> in_working(static_cast<size_t>(lc.C.rows()), 0);
+  for (int r : working) in_working[static_cast<size_t>(r)] = 1;
+  RunOutcome out;
+  bool at_subspace_minimum = false;
+  for (;; ++out.iterations) {
+    if (out.iterations >= max_iterations) return out;
+    const WorkingFactorization factorization(working_transposed(lc, eq_rows, working));
+    const VectorXd grad = H * x + g;
+    SubspaceStep step{VectorXd::Zero(n), false};
+    if (!at_subspace_minimum)
+      step = subspace_step(H, grad, factorization.null_space(), curvature_threshold,
+                           options.optimality_tolerance * std::max(1.0, grad.lpNorm<Eigen::Infinity>()));
+    const bool stationary =
+        !step.ray && step.p.lpNorm<Eigen::Infinity>() <= kStationaryStep * std::max(1.0, x.lpNorm<Eigen::Infinity>());
+    if (stationary) {
+      const VectorXd y = factorization.multipliers(grad);
+      const Index w_eq = static_cast<Index>(eq_rows.size());
+      Index worst = -1;
+      const double threshold = -options.optimality_tolerance * std::max(1.0, y.size() ? y.cwiseAbs().maxCoeff() : 0.0);
+      double most_negative = threshold;
+      for (Index k = w_eq; k < y.size(); ++k)
+        if (y[k] < most_negative) most_negative = y[k], worst = k;
+      if (worst < 0) {
+        out.status = QpStatus::optimal;
+        out.eq_multipliers = VectorXd::Zero(lc.E.rows());
+        out.in_multipliers = VectorXd::Zero(lc.C.rows());
+        for (Index k = 0; k < w_eq; ++k) out.eq_multipliers[eq_rows[static_cast<size_t>(k)]] = y[k];
+        for (Index k = w_eq; k < y.size(); ++k) out.in_multipliers[working[static_cast<size_t>(k - w_eq)]] = std::max(0.0, y[k]);
+        return out;
+      }
+      const auto dropped = working.begin() + (worst - w_eq);
+      in_working[static_cast<size_t>(*dropped)] = 0;
+      working.erase(dropped);
+      at_subspace_minimum = false;
+      continue;
+    }
+    // Ratio test; ties go to the lowest row index (Bland-like, against cycling).
+    double alpha = step.ray ? kInfinity : 1.0;
+    Index blocking = -1;
+    const double p_norm = step.p.norm();
+    const VectorXd Cp = lc.C * step.p;
+    for (Index i = 0; i < lc.C.rows(); ++i) {
+      if (in_working[static_cast<size_t>(i)] || Cp[i] <= kDirectionTolerance * row_norms[i] * p_norm) continue;
+      const double ratio = std::max(0.0, lc.c[i] - lc.C.row(i).dot(x)) / Cp[i];
+      if (ratio < alpha) alpha = ratio, blocking = i;
+    }
+    if (blocking < 0 && step.ray) {
+      out.status = QpStatus::unbounded;
+      return out;
+    }
+    x += alpha * step.p;
+    at_subspace_minimum = blocking < 0;
+    if (blocking >= 0) {
+      working.push_back(static_cast<int>(blocking));
+      in_working[static_cast<size_t>(blocking)] = 1;
+    }
+    if (g.dot(x) + 0.5 * x.dot(H * x) <= stop_objective) {
+      out.status = QpStatus::optimal;
+      ++out.iterations;
+      return out;
+    }
+  }
+}
+
+// Keeps the rows of `candidates` that are active at x and independent of `span` (which grows).
+std::vector<int> independent_active_rows(const std::vector<int>& candidates, const MatrixXd& C, const VectorXd& c, const VectorXd& x,
+                                         double tolerance, RowSpan& span) {
+  std::vector<int> kept;
+  for (int r : candidates)
+    if (std::abs(C.row(r).dot(x) - c[r]) <= tolerance && span.try_add(C.row(r).transpose())) kept.push_back(r);
+  return kept;
+}
+
+void validate(const ActiveSetOptions& o) {
+  if (o.max_iterations < 1) throw std::invalid_argument("ActiveSetOptions.max_iterations: must be >= 1");
+  if (!(o.feasibility_tolerance > 0)) throw std::invalid_argument("ActiveSetOptions.feasibility_tolerance: must be > 0");
+  if (!(o.optimality_tolerance > 0)) throw std::invalid_argument("ActiveSetOptions.optimality_tolerance: must be > 0");
+  if (!(o.curvature_tolerance > 0)) throw std::invalid_argument("ActiveSetOptions.curvature_tolerance: must be > 0");
+}
+
+std::vector<int> stacked_rows(const WorkingSet& ws, const StackedInequalities& s, Index n, Index m_in) {
+  auto check = [](int i, Index size, const char* field) {
+    if (i < 0 || i >= size)
+      throw std::invalid_argument(std::string("WorkingSet.") + field + ": index " + std::to_string(i) + " outside [0, " +
+                                  std::to_string(size) + ")");
+  };
+  std::vector<int> rows;
+  for (Index r = 0; r < static_cast<Index>(s.origin.size()); ++r) {
+    const RowOrigin& o = s.origin[static_cast<size_t>(r)];
+    const std::vector<int>& list = o.kind == RowKind::inequality    ? ws.inequalities
+                                   : o.kind == RowKind::upper_bound ? ws.upper_bounds
+                                                                    : ws.lower_bounds;
+    if (std::find(list.begin(), list.end(), o.index) != list.end()) rows.push_back(static_cast<int>(r));
+  }
+  for (int i : ws.inequalities) check(i, m_in, "inequalities");
+  for (int i : ws.lower_bounds) check(i, n, "lower_bounds");
+  for (int i : ws.upper_bounds) check(i, n, "upper_bounds");
+  return rows;
+}
+
+}  // namespace
+
+const char* to_string(QpStatus status) {
+  switch (status) {
+    case QpStatus::optimal: return "optimal";
+    case QpStatus::infeasible: return "infeasible";
+    case QpStatus::unbounded: return "unbounded";
+    case QpStatus::max_iterations: return "max_iterations";
+  }
+  return "unknown";
+}
+
+QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& options, const WorkingSet& warm_start) {
+  validate(qp);
+  validate(options);
+  const Index n = qp.num_variables();
+  const Index m_eq = qp.equality_matrix.rows();
+  const Index m_in = qp.inequality_matrix.rows();
+  const StackedInequalities stacked = stack_inequalities(qp);
+  const MatrixXd E = m_eq ? qp.equality_matrix : MatrixXd(0, n);
+  const LinearConstraints lc{E, qp.equality_rhs, stacked.matrix, stacked.rhs};
+  const double tol = options.feasibility_tolerance;
+
+  QpSolution sol;
+  sol.equality_multipliers = VectorXd::Zero(m_eq);
+  sol.inequality_multipliers = VectorXd::Zero(m_in);
+  sol.lower_bound_multipliers = VectorXd::Zero(n);
+  sol.upper_bound_multipliers = VectorXd::Zero(n);
+
+  // Independent equality rows; redundant ones are checked for consistency below.
+  RowSpan equality_span;
+  std::vector<int> eq_rows;
+  for (Index i = 0; i < m_eq; ++i)
+    if (equality_span.try_add(E.row(i).transpose())) eq_rows.push_back(static_cast<int>(i));
+
+  // Start: the subspace minimiser on the warm-start working set (or on the equalities alone),
+  // shifted from the origin clamped into the bounds.
+  VectorXd origin = VectorXd::Zero(n);
+  if (qp.lower_bounds.size()) origin = origin.cwiseMax(qp.lower_bounds);
+  if (qp.upper_bounds.size()) origin = origin.cwiseMin(qp.upper_bounds);
+  RowSpan warm_span = equality_span;
+  std::vector<int> warm_rows;
+  for (int r : stacked_rows(warm_start, stacked, n, m_in))
+    if (warm_span.try_add(stacked.matrix.row(r).transpose())) warm_rows.push_back(r);
+  VectorXd x;
+  {
+    const WorkingFactorization f(working_transposed(lc, eq_rows, warm_rows));
+    VectorXd rhs(f.w);
+    Index k = 0;
+    for (int r : eq_rows) rhs[k++] = qp.equality_rhs[r] - E.row(r).dot(origin);
+    for (int r : warm_rows) rhs[k++] = stacked.rhs[r] - stacked.matrix.row(r).dot(origin);
+    x = origin + f.particular_solution(rhs);
+    if (!warm_rows.empty()) {
+      const double curvature = options.curvature_tolerance * std::max(1.0, qp.hessian.size() ? qp.hessian.cwiseAbs().maxCoeff() : 0.0);
+      const SubspaceStep s = subspace_step(qp.hessian, qp.hessian * x + qp.gradient, f.null_space(), curvature, kInfinity);
+      x += s.p;
+    }
+  }
+  if (m_eq && (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() > tol) {
+    sol.status = QpStatus::infeasible;
+    sol.message = "equality constraints are inconsistent (redundant rows contradict each other)";
+    sol.x = x;
+    return sol;
+  }
+
+  std::vector<int> working;
+  const double violation = stacked.matrix.rows() ? std::max(0.0, (stacked.matrix * x - stacked.rhs).maxCoeff()) : 0.0;
+  if (violation <= tol) {
+    RowSpan span = equality_span;
+    working = independent_active_rows(warm_rows, stacked.matrix, stacked.rhs, x, tol, span);
+  } else {
+    // Phase 1: min t over (x, t) s.t. E x = e, C x - t <= c, t >= 0, from (x, violation).
+    const Index m_c = stacked.matrix.rows();
+    MatrixXd E1 = MatrixXd::Zero(m_eq, n + 1);
+    E1.leftCols(n) = E;
+    MatrixXd C1 = MatrixXd::Zero(m_c + 1, n + 1);
+    C1.topLeftCorner(m_c, n) = stacked.matrix;
+    C1.col(n).setConstant(-1.0);
+    VectorXd c1 = VectorXd::Zero(m_c + 1);
+    c1.head(m_c) = stacked.rhs;
+    VectorXd g1 = VectorXd::Zero(n + 1);
+    g1[n] = 1.0;
+    VectorXd x1(n + 1);
+    x1 << x, violation;
+    std::vector<int> working1;
+    const RunOutcome phase1 = run_active_set(MatrixXd::Zero(n + 1, n + 1), g1, LinearConstraints{E1, qp.equality_rhs, C1, c1},
+                                             eq_rows, working1, x1, options, options.max_iterations, tol);
+    sol.phase_one_iterations = sol.iterations = phase1.iterations;
+    x = x1.head(n);
+    if (phase1.status == QpStatus::max_iterations) {
+      sol.status = QpStatus::max_iterations;
+      sol.message = "phase 1 (feasibility) reached max_iterations";
+      sol.x = x;
+      return sol;
+    }
+    if (x1[n] > tol) {
+      sol.status = QpStatus::infeasible;
+      sol.message = "constraints are inconsistent: least achievable max violation " + std::to_string(x1[n]);
+      sol.x = x;
+      return sol;
+    }
+    std::vector<int> candidates;
+    for (int r : working1)
+      if (r < m_c) candidates.push_back(r);
+    RowSpan span = equality_span;
+    working = independent_active_rows(candidates, stacked.matrix, stacked.rhs, x, tol, span);
+  }
+
+  const RunOutcome phase2 = run_active_set(qp.hessian, qp.gradient, lc, eq_rows, working, x, options,
+                                           options.max_iterations - sol.iterations, -kInfinity);
+  sol.iterations += phase2.iterations;
+  sol.status = phase2.status;
+  sol.x = x;
+  sol.objective = qp.objective(x);
+  switch (phase2.status) {
+    case QpStatus::optimal: sol.message = "optimal"; break;
+    case QpStatus::unbounded: sol.message = "objective decreases without bound along a feasible zero-curvature ray"; break;
+    default: sol.message = "reached max_iterations"; break;
+  }
+  for (int r : working) {
+    const RowOrigin& o = stacked.origin[static_cast<size_t>(r)];
+    (o.kind == RowKind::inequality    ? sol.working_set.inequalities
+     : o.kind == RowKind::upper_bound ? sol.working_set.upper_bounds
+                                      : sol.working_set.lower_bounds)
+        .push_back(o.index);
+  }
+  if (phase2.status != QpStatus::optimal) return sol;
+  sol.equality_multipliers = phase2.eq_multipliers;
+  for (Index r = 0; r < stacked.matrix.rows(); ++r) {
+    const RowOrigin& o = stacked.origin[static_cast<size_t>(r)];
+    const double y = phase2.in_multipliers[r];
+    switch (o.kind) {
+      case RowKind::inequality: sol.inequality_multipliers[o.index] = y; break;
+      case RowKind::upper_bound: sol.upper_bound_multipliers[o.index] = y; break;
+      case RowKind::lower_bound: sol.lower_bound_multipliers[o.index] = y; break;
+    }
+  }
+  return sol;
+}
+
+}  // namespace cyclopt::qp
