@@ -103,3 +103,18 @@ TEST(SqpInitialHessian, CallerSuppliedLagrangianHessianIsUsed) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TimeLimit, IsReportedAsTimeLimit) {
+  for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
+    auto problem = hock_schittkowski_problems()[13].make();
+    SolverOptions o;
+    o.solver = kind;
+    o.max_wall_seconds = 1e-9;
+    const SolverSummary s = solve(*problem, o, vec({1, 2, 0, 4, 0, 1, 1}));
+    EXPECT_EQ(s.termination, Termination::time_limit) << to_string(kind) << ": " << s.message;
+  }
+}
+
+}  // namespace

@@ -144,7 +144,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   // eq. (6.10): mu_k = max of the previous penalties (mu_1 initially). A previous maximum of 0
   // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
   double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
-  const qp::QpSolution lp = qp::solve_active_set(l1_feasibility_lp(here(), trust_radius_), sqp_.qp);
+  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp);
   if (lp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("LP (6.14): ") + qp::to_string(lp.status) + ": " + lp.message);
     return std::nullopt;
@@ -158,7 +158,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   }
   qp::WorkingSet warm;
   for (int k = 0;; ++k) {
-    const qp::QpSolution relaxed = qp::solve_active_set(l1_relaxed_subproblem(here(), W_, mu), sqp_.qp, warm);
+    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, warm);
     if (relaxed.status != qp::QpStatus::optimal) {
       stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
       return std::nullopt;

@@ -1,6 +1,7 @@
 #include "cyclopt/nlp/sqp_subproblems.hpp"
 
 #include <limits>
+#include <vector>
 
 namespace cyclopt::nlp {
 namespace {
@@ -10,11 +11,14 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 // (6.13)/(6.14) share everything but the objective in d, the slack weight and the box on d.
+// Slacks t exist for the inequalities listed in `elastic` (in that order).
 qp::QuadraticProgram elastic_program(const LinearisationPoint& at, const MatrixXd& d_hessian, const VectorXd& d_gradient,
-                                     double slack_weight, const VectorXd& d_lower, const VectorXd& d_upper) {
+                                     double slack_weight, const VectorXd& d_lower, const VectorXd& d_upper,
+                                     const std::vector<int>& elastic) {
   const Evaluation& e = at.evaluation;
   const Index n = at.x.size(), m_eq = e.equalities.size(), m_in = e.inequalities.size();
-  const Index total = n + 2 * m_eq + m_in;  // d, r, s, t
+  const Index m_t = static_cast<Index>(elastic.size());
+  const Index total = n + 2 * m_eq + m_t;  // d, r, s, t
   qp::QuadraticProgram qp;
   qp.hessian = MatrixXd::Zero(total, total);
   qp.hessian.topLeftCorner(n, n) = d_hessian;
@@ -27,13 +31,47 @@ qp::QuadraticProgram elastic_program(const LinearisationPoint& at, const MatrixX
   qp.equality_rhs = -e.equalities;
   qp.inequality_matrix = MatrixXd::Zero(m_in, total);  // J_u d - t <= -c_u
   qp.inequality_matrix.leftCols(n) = e.inequality_jacobian;
-  qp.inequality_matrix.rightCols(m_in) = -MatrixXd::Identity(m_in, m_in);
+  for (Index k = 0; k < m_t; ++k) qp.inequality_matrix(elastic[static_cast<size_t>(k)], n + 2 * m_eq + k) = -1.0;
   qp.inequality_rhs = -e.inequalities;
   qp.lower_bounds = VectorXd::Zero(total);
   qp.lower_bounds.head(n) = d_lower;
   qp.upper_bounds = VectorXd::Constant(total, std::numeric_limits<double>::infinity());
   qp.upper_bounds.head(n) = d_upper;
   return qp;
+}
+
+// Solves the elastic program with slacks on a growing subset of the inequalities, starting from
+// the violated ones: a hard row whose multiplier exceeds the slack weight would take a slack in
+// the full program, so it gets one and the QP is re-solved. At the end every hard row has a
+// multiplier <= the weight, i.e. the solution is a KKT point of the program with all slacks.
+qp::QpSolution solve_elastic(const LinearisationPoint& at, const MatrixXd& d_hessian, const VectorXd& d_gradient,
+                             double slack_weight, const VectorXd& d_lower, const VectorXd& d_upper,
+                             const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start) {
+  const Evaluation& e = at.evaluation;
+  const Index m_in = e.inequalities.size();
+  const int fixed_variables = static_cast<int>(at.x.size() + 2 * e.equalities.size());  // d, r, s
+  std::vector<int> elastic;
+  std::vector<char> is_elastic(static_cast<size_t>(m_in), 0);
+  for (Index i = 0; i < m_in; ++i)
+    if (e.inequalities[i] > 0.0) elastic.push_back(static_cast<int>(i)), is_elastic[static_cast<size_t>(i)] = 1;
+  qp::WorkingSet warm = warm_start;  // bounds on slacks t would be renumbered: keep d, r, s only
+  std::erase_if(warm.lower_bounds, [&](int j) { return j >= fixed_variables; });
+  std::erase_if(warm.upper_bounds, [&](int j) { return j >= fixed_variables; });
+  for (;;) {
+    const qp::QpSolution solution =
+        qp::solve_active_set(elastic_program(at, d_hessian, d_gradient, slack_weight, d_lower, d_upper, elastic), options, warm);
+    if (solution.status != qp::QpStatus::optimal) return solution;
+    bool grown = false;
+    const double limit = slack_weight * (1.0 + options.optimality_tolerance) + options.optimality_tolerance;
+    for (Index i = 0; i < m_in; ++i)
+      if (!is_elastic[static_cast<size_t>(i)] && solution.inequality_multipliers[i] > limit) {
+        elastic.push_back(static_cast<int>(i));
+        is_elastic[static_cast<size_t>(i)] = 1;
+        grown = true;
+      }
+    if (!grown) return solution;
+    warm = solution.working_set;  // new slacks are appended: earlier indices stay valid
+  }
 }
 
 }  // namespace
@@ -52,14 +90,15 @@ qp::QuadraticProgram sqp_subproblem(const LinearisationPoint& at, const MatrixXd
   return qp;
 }
 
-qp::QuadraticProgram l1_relaxed_subproblem(const LinearisationPoint& at, const MatrixXd& W, double mu) {
-  return elastic_program(at, W, at.evaluation.gradient, mu, at.lower - at.x, at.upper - at.x);
+qp::QpSolution solve_l1_relaxed_subproblem(const LinearisationPoint& at, const MatrixXd& W, double mu,
+                                          const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start) {
+  return solve_elastic(at, W, at.evaluation.gradient, mu, at.lower - at.x, at.upper - at.x, options, warm_start);
 }
 
-qp::QuadraticProgram l1_feasibility_lp(const LinearisationPoint& at, double trust_radius) {
+qp::QpSolution solve_l1_feasibility_lp(const LinearisationPoint& at, double trust_radius, const qp::ActiveSetOptions& options) {
   const Index n = at.x.size();
-  return elastic_program(at, MatrixXd::Zero(n, n), VectorXd::Zero(n), 1.0,
-                         (at.lower - at.x).cwiseMax(-trust_radius), (at.upper - at.x).cwiseMin(trust_radius));
+  return solve_elastic(at, MatrixXd::Zero(n, n), VectorXd::Zero(n), 1.0, (at.lower - at.x).cwiseMax(-trust_radius),
+                       (at.upper - at.x).cwiseMin(trust_radius), options, {});
 }
 
 }  // namespace cyclopt::nlp
