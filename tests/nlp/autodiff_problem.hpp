@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <limits>
 #include <string>
 
 namespace cyclopt::nlp::testing {
@@ -18,6 +19,9 @@ namespace cyclopt::nlp::testing {
 template <class D>
 class AutodiffProblem : public Problem {
  public:
+  AutodiffProblem()  // no bounds
+      : AutodiffProblem(Eigen::VectorXd::Constant(D::n, -std::numeric_limits<double>::infinity()),
+                        Eigen::VectorXd::Constant(D::n, std::numeric_limits<double>::infinity())) {}
   AutodiffProblem(Eigen::VectorXd lower, Eigen::VectorXd upper) : lower_(std::move(lower)), upper_(std::move(upper)) {}
   int num_variables() const override { return D::n; }
   int num_equalities() const override { return D::m_eq; }

@@ -27,8 +27,7 @@ MultistartResult run(SolverKind kind, int threads) {
   o.base_seed = 1234;
   o.num_threads = threads;
   o.solver.solver = kind;
-  const Eigen::VectorXd free = Eigen::VectorXd::Constant(2, std::numeric_limits<double>::infinity());
-  return multistart([free] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(-free, free); },
+  return multistart([] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(); },
                     [](std::mt19937_64& rng) {
                       std::uniform_real_distribution<double> u(-2.0, 2.0);
                       Eigen::VectorXd x(2);

@@ -91,9 +91,8 @@ struct FailingRegion {
 
 TEST(EvaluationFailure, BothSolversShortenStepsIntoTheFailingRegion) {
   using Problem2 = cyclopt::nlp::testing::AutodiffProblem<FailingRegion>;
-  const Eigen::VectorXd free = Eigen::VectorXd::Constant(2, cyclopt::nlp::testing::kInf);
   for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
-    Problem2 problem(-free, free);
+    Problem2 problem;
     const SolverSummary s = solve(problem, options_for(kind), vec({-3, 4}));
     std::printf("failing region, %s: %s, %d iterations, %d failed evaluations\n", to_string(kind), to_string(s.termination),
                 s.iterations, s.failed_evaluations);
@@ -108,9 +107,8 @@ TEST(EvaluationFailure, BothSolversShortenStepsIntoTheFailingRegion) {
 
 TEST(EvaluationFailure, FailingStartIsReportedNotThrown) {
   using Problem2 = cyclopt::nlp::testing::AutodiffProblem<FailingRegion>;
-  const Eigen::VectorXd free = Eigen::VectorXd::Constant(2, cyclopt::nlp::testing::kInf);
   for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
-    Problem2 problem(-free, free);
+    Problem2 problem;
     const SolverSummary s = solve(problem, options_for(kind), vec({1, 0}));
     EXPECT_EQ(s.termination, Termination::evaluation_failure) << to_string(kind) << ": " << s.message;
     EXPECT_GT(s.failed_evaluations, 0);
@@ -130,16 +128,15 @@ struct CircleAndLine {
 
 TEST(IncompatibleSubproblem, SqpRecoversThroughTheL1Relaxation) {
   using P = cyclopt::nlp::testing::AutodiffProblem<CircleAndLine>;
-  const Eigen::VectorXd free = Eigen::VectorXd::Constant(2, cyclopt::nlp::testing::kInf);
-  P problem(-free, free);
+  P problem;
   const Eigen::VectorXd x0 = vec({2, 2});
   Evaluation e;
   ASSERT_TRUE(problem.evaluate(x0, true, e).ok);
-  const Eigen::VectorXd lower = -free, upper = free;
+  const Eigen::VectorXd upper = Eigen::VectorXd::Constant(2, cyclopt::nlp::testing::kInf), lower = -upper;
   const auto qp = cyclopt::qp::solve_active_set(sqp_subproblem({e, x0, lower, upper}, Eigen::MatrixXd::Identity(2, 2)));
   ASSERT_EQ(qp.status, cyclopt::qp::QpStatus::infeasible);  // the premise: (6.7) is incompatible at x0
   for (SolverKind kind : {SolverKind::sqp, SolverKind::ipopt}) {
-    P p(-free, free);
+    P p;
     const SolverSummary s = solve(p, options_for(kind), x0);
     ASSERT_TRUE(s.success()) << to_string(kind) << ": " << s.message;
     EXPECT_LE(s.constraint_violation, 1e-8);
@@ -160,9 +157,8 @@ struct Inconsistent {
 
 TEST(Infeasibility, BothSolversReportAnInfeasibleProblem) {
   using P = cyclopt::nlp::testing::AutodiffProblem<Inconsistent>;
-  const Eigen::VectorXd free = Eigen::VectorXd::Constant(2, cyclopt::nlp::testing::kInf);
   for (SolverKind kind : {SolverKind::sqp, SolverKind::ipopt}) {
-    P p(-free, free);
+    P p;
     const SolverSummary s = solve(p, options_for(kind), vec({2, 1}));
     EXPECT_EQ(s.termination, Termination::infeasible) << to_string(kind) << ": " << s.message;
     if (kind == SolverKind::sqp) {

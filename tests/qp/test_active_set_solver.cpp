@@ -79,11 +79,16 @@ void expect_kkt(const QuadraticProgram& qp, const QpSolution& s, double tol) {
 }
 
 // Nocedal & Wright, Example 16.4: solution (1.4, 1.7), only the first constraint active (y = 0.8).
-TEST(ActiveSetSolver, NocedalWrightExample16_4) {
+QuadraticProgram nocedal_wright_example_16_4() {
   QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd((VectorXd(2) << -2, -5).finished()));
   qp.inequality_matrix = (MatrixXd(3, 2) << -1, 2, 1, 2, 1, -2).finished();
   qp.inequality_rhs = (VectorXd(3) << 2, 6, 2).finished();
   qp.lower_bounds = VectorXd::Zero(2);
+  return qp;
+}
+
+TEST(ActiveSetSolver, NocedalWrightExample16_4) {
+  const QuadraticProgram qp = nocedal_wright_example_16_4();
   const QpSolution s = solve_active_set(qp);
   expect_kkt(qp, s, 1e-12);
   EXPECT_NEAR(s.x[0], 1.4, 1e-12);
@@ -282,10 +287,7 @@ TEST(ActiveSetSolver, RandomInfeasibleQpsAreDetected) {
 }
 
 TEST(ActiveSetSolver, WarmStartFromOwnSolutionNeedsNoWork) {
-  QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd((VectorXd(2) << -2, -5).finished()));
-  qp.inequality_matrix = (MatrixXd(3, 2) << -1, 2, 1, 2, 1, -2).finished();
-  qp.inequality_rhs = (VectorXd(3) << 2, 6, 2).finished();
-  qp.lower_bounds = VectorXd::Zero(2);
+  const QuadraticProgram qp = nocedal_wright_example_16_4();
   const QpSolution cold = solve_active_set(qp);
   const QpSolution warm = solve_active_set(qp, {}, cold.working_set);
   expect_kkt(qp, warm, 1e-12);
