@@ -131,6 +131,9 @@ std::optional<SearchDirection> SqpRun::search_direction() {
     return std::nullopt;
   }
   working_set_ = qp.working_set;
+  if (options_.print_level > 1)
+    std::printf("sqp        QP (6.7): %d iterations (%d in phase 1), %zu active\n", qp.iterations, qp.phase_one_iterations,
+                qp.working_set.inequalities.size() + qp.working_set.lower_bounds.size() + qp.working_set.upper_bounds.size());
   SearchDirection dir{qp.x, {qp.equality_multipliers.cwiseAbs(), qp.inequality_multipliers}, true, qp.working_set.inequalities};
   const double floor = sqp_.relative_min_penalty * dir.mu.max();  // eq. (6.9a/b)
   dir.mu.equality = dir.mu.equality.cwiseMax(floor);

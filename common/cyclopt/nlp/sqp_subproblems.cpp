@@ -49,28 +49,32 @@ qp::QpSolution solve_elastic(const LinearisationPoint& at, const MatrixXd& d_hes
                              const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start) {
   const Evaluation& e = at.evaluation;
   const Index m_in = e.inequalities.size();
-  const int fixed_variables = static_cast<int>(at.x.size() + 2 * e.equalities.size());  // d, r, s
+  const int d_size = static_cast<int>(at.x.size());
   std::vector<int> elastic;
   std::vector<char> is_elastic(static_cast<size_t>(m_in), 0);
   for (Index i = 0; i < m_in; ++i)
     if (e.inequalities[i] > 0.0) elastic.push_back(static_cast<int>(i)), is_elastic[static_cast<size_t>(i)] = 1;
-  qp::WorkingSet warm = warm_start;  // bounds on slacks t would be renumbered: keep d, r, s only
-  std::erase_if(warm.lower_bounds, [&](int j) { return j >= fixed_variables; });
-  std::erase_if(warm.upper_bounds, [&](int j) { return j >= fixed_variables; });
+  // Warm start: the given working set for d (slack indices would be renumbered), all slacks at 0.
+  qp::WorkingSet warm = warm_start;
+  std::erase_if(warm.lower_bounds, [&](int j) { return j >= d_size; });
+  std::erase_if(warm.upper_bounds, [&](int j) { return j >= d_size; });
+  for (int j = d_size; j < d_size + 2 * static_cast<int>(e.equalities.size()) + static_cast<int>(elastic.size()); ++j)
+    warm.lower_bounds.push_back(j);
   for (;;) {
     const qp::QpSolution solution =
         qp::solve_active_set(elastic_program(at, d_hessian, d_gradient, slack_weight, d_lower, d_upper, elastic), options, warm);
     if (solution.status != qp::QpStatus::optimal) return solution;
     bool grown = false;
+    warm = solution.working_set;  // new slacks are appended (at 0): earlier indices stay valid
     const double limit = slack_weight * (1.0 + options.optimality_tolerance) + options.optimality_tolerance;
     for (Index i = 0; i < m_in; ++i)
       if (!is_elastic[static_cast<size_t>(i)] && solution.inequality_multipliers[i] > limit) {
         elastic.push_back(static_cast<int>(i));
         is_elastic[static_cast<size_t>(i)] = 1;
+        warm.lower_bounds.push_back(d_size + 2 * static_cast<int>(e.equalities.size()) + static_cast<int>(elastic.size()) - 1);
         grown = true;
       }
     if (!grown) return solution;
-    warm = solution.working_set;  // new slacks are appended: earlier indices stay valid
   }
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -156,12 +157,47 @@ SubspaceStep subspace_step(const MatrixXd& H, const VectorXd& grad, const Matrix
   return step;
 }
 
-MatrixXd working_transposed(const LinearConstraints& lc, const std::vector<int>& eq_rows, const std::vector<int>& working) {
-  MatrixXd at(lc.E.cols(), static_cast<Index>(eq_rows.size() + working.size()));
+// Rows of C that are simple bounds (one nonzero, +-1): the variable they bound, else -1.
+std::vector<int> simple_bound_variables(const MatrixXd& C) {
+  std::vector<int> variable(static_cast<size_t>(C.rows()), -1);
+  for (Index r = 0; r < C.rows(); ++r) {
+    Index nonzeros = 0, j = -1;
+    for (Index k = 0; k < C.cols(); ++k)
+      if (C(r, k) != 0.0) ++nonzeros, j = k;
+    if (nonzeros == 1 && std::abs(C(r, j)) == 1.0) variable[static_cast<size_t>(r)] = static_cast<int>(j);
+  }
+  return variable;
+}
+
+// The working set seen as fixed variables (its simple-bound rows) and general rows on the free
+// variables: the null-space factorisation then only has the free variables' dimension, which keeps
+// the l1 subproblems (6.13)/(6.14) - many slacks, most at their bound 0 - cheap.
+struct Subspace {
+  std::vector<int> free_variables;
+  std::vector<int> general;  // positions in `working` of general rows
+  std::optional<WorkingFactorization> factorization;  // of [E rows; general rows]' on the free variables
+};
+
+Subspace make_subspace(const LinearConstraints& lc, const std::vector<int>& bound_variable, const std::vector<int>& eq_rows,
+                       const std::vector<int>& working) {
+  const Index n = lc.C.cols() ? lc.C.cols() : lc.E.cols();
+  Subspace s;
+  std::vector<char> fixed(static_cast<size_t>(n), 0);
+  for (size_t k = 0; k < working.size(); ++k) {
+    const int j = bound_variable[static_cast<size_t>(working[k])];
+    if (j >= 0)
+      fixed[static_cast<size_t>(j)] = 1;
+    else
+      s.general.push_back(static_cast<int>(k));
+  }
+  for (Index j = 0; j < n; ++j)
+    if (!fixed[static_cast<size_t>(j)]) s.free_variables.push_back(static_cast<int>(j));
+  MatrixXd at(static_cast<Index>(s.free_variables.size()), static_cast<Index>(eq_rows.size() + s.general.size()));
   Index col = 0;
-  for (int r : eq_rows) at.col(col++) = lc.E.row(r).transpose();
-  for (int r : working) at.col(col++) = lc.C.row(r).transpose();
-  return at;
+  for (int r : eq_rows) at.col(col++) = lc.E(r, s.free_variables).transpose();
+  for (int k : s.general) at.col(col++) = lc.C(working[static_cast<size_t>(k)], s.free_variables).transpose();
+  s.factorization.emplace(at);
+  return s;
 }
 
 struct RunOutcome {
@@ -179,37 +215,60 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
   const Index n = x.size();
   const double curvature_threshold = options.curvature_tolerance * std::max(1.0, H.size() ? H.cwiseAbs().maxCoeff() : 0.0);
   const VectorXd row_norms = lc.C.rowwise().norm();
+  const std::vector<int> bound_variable = simple_bound_variables(lc.C);
   std::vector<char> in_working(static_cast<size_t>(lc.C.rows()), 0);
   for (int r : working) in_working[static_cast<size_t>(r)] = 1;
   RunOutcome out;
   bool at_subspace_minimum = false;
   for (;; ++out.iterations) {
     if (out.iterations >= max_iterations) return out;
-    const WorkingFactorization factorization(working_transposed(lc, eq_rows, working));
+    const Subspace sub = make_subspace(lc, bound_variable, eq_rows, working);
+    const WorkingFactorization& factorization = *sub.factorization;
     const VectorXd grad = H * x + g;
+    const VectorXd grad_free = grad(sub.free_variables);
     SubspaceStep step{VectorXd::Zero(n), false};
-    if (!at_subspace_minimum)
-      step = subspace_step(H, grad, factorization.null_space(), curvature_threshold,
-                           options.optimality_tolerance * std::max(1.0, grad.lpNorm<Eigen::Infinity>()));
+    if (!at_subspace_minimum) {
+      const SubspaceStep free_step =
+          subspace_step(H(sub.free_variables, sub.free_variables), grad_free, factorization.null_space(), curvature_threshold,
+                        options.optimality_tolerance * std::max(1.0, grad.lpNorm<Eigen::Infinity>()));
+      step.p(sub.free_variables) = free_step.p;
+      step.ray = free_step.ray;
+    }
     const bool stationary =
         !step.ray && step.p.lpNorm<Eigen::Infinity>() <= kStationaryStep * std::max(1.0, x.lpNorm<Eigen::Infinity>());
     if (stationary) {
-      const VectorXd y = factorization.multipliers(grad);
+      // Multipliers of equality and general rows from the free variables; of a bound row on x_j
+      // from component j of grad + A' y = 0.
+      const VectorXd y_rows = factorization.multipliers(grad_free);
       const Index w_eq = static_cast<Index>(eq_rows.size());
+      VectorXd residual = grad;
+      for (Index k = 0; k < w_eq; ++k) residual += y_rows[k] * lc.E.row(eq_rows[static_cast<size_t>(k)]).transpose();
+      VectorXd y_working = VectorXd::Zero(static_cast<Index>(working.size()));
+      for (size_t k = 0; k < sub.general.size(); ++k) {
+        const int position = sub.general[k];
+        y_working[position] = y_rows[w_eq + static_cast<Index>(k)];
+        residual += y_working[position] * lc.C.row(working[static_cast<size_t>(position)]).transpose();
+      }
+      for (Index k = 0; k < y_working.size(); ++k) {
+        const int r = working[static_cast<size_t>(k)], j = bound_variable[static_cast<size_t>(r)];
+        if (j >= 0) y_working[k] = -residual[j] / lc.C(r, j);
+      }
+      double largest = 0.0;
+      if (y_rows.size()) largest = y_rows.cwiseAbs().maxCoeff();
+      if (y_working.size()) largest = std::max(largest, y_working.cwiseAbs().maxCoeff());
+      double most_negative = -options.optimality_tolerance * std::max(1.0, largest);
       Index worst = -1;
-      const double threshold = -options.optimality_tolerance * std::max(1.0, y.size() ? y.cwiseAbs().maxCoeff() : 0.0);
-      double most_negative = threshold;
-      for (Index k = w_eq; k < y.size(); ++k)
-        if (y[k] < most_negative) most_negative = y[k], worst = k;
+      for (Index k = 0; k < y_working.size(); ++k)
+        if (y_working[k] < most_negative) most_negative = y_working[k], worst = k;
       if (worst < 0) {
         out.status = QpStatus::optimal;
         out.eq_multipliers = VectorXd::Zero(lc.E.rows());
         out.in_multipliers = VectorXd::Zero(lc.C.rows());
-        for (Index k = 0; k < w_eq; ++k) out.eq_multipliers[eq_rows[static_cast<size_t>(k)]] = y[k];
-        for (Index k = w_eq; k < y.size(); ++k) out.in_multipliers[working[static_cast<size_t>(k - w_eq)]] = std::max(0.0, y[k]);
+        for (Index k = 0; k < w_eq; ++k) out.eq_multipliers[eq_rows[static_cast<size_t>(k)]] = y_rows[k];
+        for (Index k = 0; k < y_working.size(); ++k) out.in_multipliers[working[static_cast<size_t>(k)]] = std::max(0.0, y_working[k]);
         return out;
       }
-      const auto dropped = working.begin() + (worst - w_eq);
+      const auto dropped = working.begin() + worst;
       in_working[static_cast<size_t>(*dropped)] = 0;
       working.erase(dropped);
       at_subspace_minimum = false;
@@ -243,13 +302,38 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
   }
 }
 
-// Keeps the rows of `candidates` that are active at x and independent of `span` (which grows).
-std::vector<int> independent_active_rows(const std::vector<int>& candidates, const MatrixXd& C, const VectorXd& c, const VectorXd& x,
-                                         double tolerance, RowSpan& span) {
-  std::vector<int> kept;
+// The rows of `candidates` active at x (all of them if x is null) that, with the equality rows,
+// stay linearly independent: bound rows fixing distinct variables, then general rows independent
+// of the equalities on the remaining free variables. (If a fixing makes the equalities dependent,
+// bound rows are treated like general rows instead - rare, and slower.)
+std::vector<int> independent_rows(const std::vector<int>& candidates, const LinearConstraints& lc,
+                                  const std::vector<int>& bound_variable, const std::vector<int>& eq_rows, const VectorXd* x,
+                                  double tolerance) {
+  const Index n = lc.C.cols();
+  std::vector<int> active;
   for (int r : candidates)
-    if (std::abs(C.row(r).dot(x) - c[r]) <= tolerance && span.try_add(C.row(r).transpose())) kept.push_back(r);
-  return kept;
+    if (x == nullptr || std::abs(lc.C.row(r).dot(*x) - lc.c[r]) <= tolerance) active.push_back(r);
+  for (bool fix_bounds : {true, false}) {
+    std::vector<char> fixed(static_cast<size_t>(n), 0);
+    std::vector<int> kept;
+    if (fix_bounds)
+      for (int r : active) {
+        const int j = bound_variable[static_cast<size_t>(r)];
+        if (j >= 0 && !fixed[static_cast<size_t>(j)]) fixed[static_cast<size_t>(j)] = 1, kept.push_back(r);
+      }
+    std::vector<int> free_variables;
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[static_cast<size_t>(j)]) free_variables.push_back(static_cast<int>(j));
+    RowSpan span;
+    bool equalities_independent = true;
+    for (int r : eq_rows) equalities_independent = span.try_add(lc.E(r, free_variables).transpose()) && equalities_independent;
+    if (!equalities_independent) continue;
+    for (int r : active)
+      if ((!fix_bounds || bound_variable[static_cast<size_t>(r)] < 0) && span.try_add(lc.C(r, free_variables).transpose()))
+        kept.push_back(r);
+    return kept;
+  }
+  return {};
 }
 
 void validate(const ActiveSetOptions& o) {
@@ -315,26 +399,33 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
     if (equality_span.try_add(E.row(i).transpose())) eq_rows.push_back(static_cast<int>(i));
 
   // Start: the subspace minimiser on the warm-start working set (or on the equalities alone),
-  // shifted from the origin clamped into the bounds.
-  VectorXd origin = VectorXd::Zero(n);
-  if (qp.lower_bounds.size()) origin = origin.cwiseMax(qp.lower_bounds);
-  if (qp.upper_bounds.size()) origin = origin.cwiseMin(qp.upper_bounds);
-  RowSpan warm_span = equality_span;
-  std::vector<int> warm_rows;
-  for (int r : stacked_rows(warm_start, stacked, n, m_in))
-    if (warm_span.try_add(stacked.matrix.row(r).transpose())) warm_rows.push_back(r);
-  VectorXd x;
+  // from the origin clamped into the bounds; warm bound rows fix their variables at the bound.
+  const std::vector<int> bound_variable = simple_bound_variables(stacked.matrix);
+  const double curvature = options.curvature_tolerance * std::max(1.0, qp.hessian.size() ? qp.hessian.cwiseAbs().maxCoeff() : 0.0);
+  VectorXd x = VectorXd::Zero(n);
+  if (qp.lower_bounds.size()) x = x.cwiseMax(qp.lower_bounds);
+  if (qp.upper_bounds.size()) x = x.cwiseMin(qp.upper_bounds);
+  const std::vector<int> warm_rows =
+      independent_rows(stacked_rows(warm_start, stacked, n, m_in), lc, bound_variable, eq_rows, nullptr, tol);
   {
-    const WorkingFactorization f(working_transposed(lc, eq_rows, warm_rows));
-    VectorXd rhs(f.w);
+    const Subspace sub = make_subspace(lc, bound_variable, eq_rows, warm_rows);
+    for (int r : warm_rows) {
+      const int j = bound_variable[static_cast<size_t>(r)];
+      if (j >= 0) x[j] = stacked.rhs[r] / stacked.matrix(r, j);
+    }
+    VectorXd rhs(sub.factorization->w);
     Index k = 0;
-    for (int r : eq_rows) rhs[k++] = qp.equality_rhs[r] - E.row(r).dot(origin);
-    for (int r : warm_rows) rhs[k++] = stacked.rhs[r] - stacked.matrix.row(r).dot(origin);
-    x = origin + f.particular_solution(rhs);
+    for (int r : eq_rows) rhs[k++] = qp.equality_rhs[r] - E.row(r).dot(x);
+    for (int position : sub.general) {
+      const int r = warm_rows[static_cast<size_t>(position)];
+      rhs[k++] = stacked.rhs[r] - stacked.matrix.row(r).dot(x);
+    }
+    x(sub.free_variables) += sub.factorization->particular_solution(rhs);
     if (!warm_rows.empty()) {
-      const double curvature = options.curvature_tolerance * std::max(1.0, qp.hessian.size() ? qp.hessian.cwiseAbs().maxCoeff() : 0.0);
-      const SubspaceStep s = subspace_step(qp.hessian, qp.hessian * x + qp.gradient, f.null_space(), curvature, kInfinity);
-      x += s.p;
+      const VectorXd grad = qp.hessian * x + qp.gradient;
+      x(sub.free_variables) += subspace_step(qp.hessian(sub.free_variables, sub.free_variables), grad(sub.free_variables),
+                                             sub.factorization->null_space(), curvature, kInfinity)
+                                   .p;
     }
   }
   if (m_eq && (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() > tol) {
@@ -345,27 +436,32 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
   }
 
   std::vector<int> working;
-  const double violation = stacked.matrix.rows() ? std::max(0.0, (stacked.matrix * x - stacked.rhs).maxCoeff()) : 0.0;
+  const Index m_c = stacked.matrix.rows();
+  const VectorXd residuals = stacked.matrix * x - stacked.rhs;
+  const double violation = m_c ? std::max(0.0, residuals.maxCoeff()) : 0.0;
   if (violation <= tol) {
-    RowSpan span = equality_span;
-    working = independent_active_rows(warm_rows, stacked.matrix, stacked.rhs, x, tol, span);
+    working = independent_rows(warm_rows, lc, bound_variable, eq_rows, &x, tol);
   } else {
-    // Phase 1: min t over (x, t) s.t. E x = e, C x - t <= c, t >= 0, from (x, violation).
-    const Index m_c = stacked.matrix.rows();
+    // Phase 1: min t over (x, t) s.t. E x = e, C_i x - t <= c_i for the general rows and the
+    // violated bound rows, the satisfied bound rows kept hard (so warm bound rows stay fixed),
+    // t >= 0, from (x, violation).
     MatrixXd E1 = MatrixXd::Zero(m_eq, n + 1);
     E1.leftCols(n) = E;
     MatrixXd C1 = MatrixXd::Zero(m_c + 1, n + 1);
     C1.topLeftCorner(m_c, n) = stacked.matrix;
-    C1.col(n).setConstant(-1.0);
+    for (Index r = 0; r < m_c; ++r)
+      if (bound_variable[static_cast<size_t>(r)] < 0 || residuals[r] > 0.0) C1(r, n) = -1.0;
+    C1(m_c, n) = -1.0;
     VectorXd c1 = VectorXd::Zero(m_c + 1);
     c1.head(m_c) = stacked.rhs;
     VectorXd g1 = VectorXd::Zero(n + 1);
     g1[n] = 1.0;
     VectorXd x1(n + 1);
     x1 << x, violation;
-    std::vector<int> working1;
-    const RunOutcome phase1 = run_active_set(MatrixXd::Zero(n + 1, n + 1), g1, LinearConstraints{E1, qp.equality_rhs, C1, c1},
-                                             eq_rows, working1, x1, options, options.max_iterations, tol);
+    const LinearConstraints lc1{E1, qp.equality_rhs, C1, c1};
+    std::vector<int> working1 = independent_rows(warm_rows, lc1, simple_bound_variables(C1), eq_rows, &x1, tol);
+    const RunOutcome phase1 =
+        run_active_set(MatrixXd::Zero(n + 1, n + 1), g1, lc1, eq_rows, working1, x1, options, options.max_iterations, tol);
     sol.phase_one_iterations = sol.iterations = phase1.iterations;
     x = x1.head(n);
     if (phase1.status == QpStatus::max_iterations) {
@@ -383,8 +479,7 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
     std::vector<int> candidates;
     for (int r : working1)
       if (r < m_c) candidates.push_back(r);
-    RowSpan span = equality_span;
-    working = independent_active_rows(candidates, stacked.matrix, stacked.rhs, x, tol, span);
+    working = independent_rows(candidates, lc, bound_variable, eq_rows, &x, tol);
   }
 
   const RunOutcome phase2 = run_active_set(qp.hessian, qp.gradient, lc, eq_rows, working, x, options,
