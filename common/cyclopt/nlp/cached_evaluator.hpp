@@ -21,7 +21,6 @@ class CachedEvaluator {
   // Throws std::logic_error if the problem returns wrongly sized results.
   const EvaluationStatus& evaluate(const Eigen::VectorXd& x, bool with_derivatives);
   const Evaluation& evaluation() const { return evaluation_; }  // of the last evaluate()
-  Problem& problem() { return problem_; }
 
  private:
   void check_sizes(bool with_derivatives) const;

@@ -44,8 +44,7 @@ struct SearchDirection {
 class SqpRun {
  public:
   SqpRun(Problem& problem, const SolverOptions& options, SolverSummary& summary)
-      : problem_(problem),
-        options_(options),
+      : options_(options),
         sqp_(options.sqp),
         summary_(summary),
         evaluator_(problem, summary),
@@ -78,7 +77,6 @@ class SqpRun {
   ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
   void finish();
 
-  Problem& problem_;
   const SolverOptions& options_;
   const SqpOptions& sqp_;
   SolverSummary& summary_;
@@ -167,6 +165,9 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
       return std::nullopt;
     }
     warm = relaxed.working_set;
+    if (options_.print_level > 1)
+      std::printf("sqp        relaxed QP (6.13), mu = %.3e: %d iterations, %lld variables; LP (6.14): %d iterations\n", mu,
+                  relaxed.iterations, static_cast<long long>(relaxed.x.size()), lp.iterations);
     SearchDirection dir{relaxed.x.head(n_), Penalties::uniform(mu, m_eq_, m_in_), false, relaxed.working_set.inequalities};
     const bool enough_violation_decrease = m0 - linearized_violation(current_, dir.d) >= sqp_.epsilon1 * lp_decrease;  // step 6
     const bool enough_model_decrease = l1_model(current_, W_, zero, dir.mu) - l1_model(current_, W_, dir.d, dir.mu) >=

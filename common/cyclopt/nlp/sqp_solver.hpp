@@ -20,6 +20,7 @@
 // TolOpt/TolCon/MaxIter/MaxTime are SolverOptions::optimality_tolerance/constraint_tolerance/
 // max_iterations/max_wall_seconds; an iterate is a KKT point when, additionally, its
 // least-squares inequality and bound multipliers have the right sign (within TolOpt).
+// print_level 1 prints one line per iteration, 2 also the QP subproblem iteration counts.
 
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/nlp/solver_options.hpp"
