@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -130,29 +131,55 @@ struct SubspaceStep {
   bool ray = false;  // zero-curvature descent direction: no natural step length
 };
 
-// Minimises the quadratic model over x + null(A_W): Newton step on the positive-curvature part of
-// the reduced Hessian; if the reduced gradient has a component of zero curvature, that component
-// (negated) is a descent ray instead.
-SubspaceStep subspace_step(const MatrixXd& H, const VectorXd& grad, const MatrixXd& Z, double curvature_threshold,
-                           double gradient_threshold) {
-  SubspaceStep step{VectorXd::Zero(grad.size()), false};
+// Variables with a nonzero Hessian column (the others - e.g. the slacks of (6.13) - have no curvature).
+std::vector<int> curved_variables(const MatrixXd& H) {
+  std::vector<int> curved;
+  for (Index j = 0; j < H.cols(); ++j)
+    if (H.col(j).cwiseAbs().maxCoeff() > 0.0) curved.push_back(static_cast<int>(j));
+  return curved;
+}
+
+// Minimises the quadratic model over x + null(A_W), in the coordinates of the free variables
+// (columns of Z): Newton step on the positive-curvature part of the reduced Hessian Z'HZ; if the
+// reduced gradient has a component of zero curvature, that component (negated) is a descent ray
+// instead. Z'HZ is never formed: with H_SS = V L V' on the curved free variables S,
+// Z'HZ = B'B for B = L^1/2 V' Z_S, and the thin SVD of B' (rank <= |S|) gives its eigen-pairs, so
+// many zero-curvature variables cost only O(k |S|^2).
+SubspaceStep subspace_step(const MatrixXd& H, const std::vector<int>& free_variables, const std::vector<char>& is_curved,
+                           const VectorXd& grad_free, const MatrixXd& Z, double curvature_threshold, double gradient_threshold) {
+  SubspaceStep step{VectorXd::Zero(grad_free.size()), false};
   if (Z.cols() == 0) return step;
-  const Eigen::SelfAdjointEigenSolver<MatrixXd> eigen(Z.transpose() * H * Z);
-  const VectorXd coefficients = eigen.eigenvectors().transpose() * (Z.transpose() * grad);
+  std::vector<int> curved, positions;  // variable indices and their rows in Z
+  for (size_t k = 0; k < free_variables.size(); ++k)
+    if (is_curved[static_cast<size_t>(free_variables[k])]) curved.push_back(free_variables[k]), positions.push_back(static_cast<int>(k));
+  const VectorXd gz = Z.transpose() * grad_free;
   VectorXd newton = VectorXd::Zero(Z.cols());
-  VectorXd flat = VectorXd::Zero(Z.cols());
-  for (Index k = 0; k < Z.cols(); ++k) {
-    const double curvature = eigen.eigenvalues()[k];
-    if (curvature > curvature_threshold)
-      newton[k] = -coefficients[k] / curvature;
-    else
-      flat[k] = coefficients[k];
+  VectorXd flat = gz;
+  if (!curved.empty()) {
+    const Eigen::SelfAdjointEigenSolver<MatrixXd> h(H(curved, curved));
+    std::vector<Index> positive;
+    for (Index j = 0; j < h.eigenvalues().size(); ++j)
+      if (h.eigenvalues()[j] > curvature_threshold) positive.push_back(j);
+    if (!positive.empty()) {
+      MatrixXd Bt(Z.cols(), static_cast<Index>(positive.size()));  // B' = Z_S' V L^1/2
+      const MatrixXd ZS = Z(positions, Eigen::all);
+      for (size_t j = 0; j < positive.size(); ++j)
+        Bt.col(static_cast<Index>(j)) = std::sqrt(h.eigenvalues()[positive[j]]) * (ZS.transpose() * h.eigenvectors().col(positive[j]));
+      const Eigen::JacobiSVD<MatrixXd> svd(Bt, Eigen::ComputeThinU);
+      for (Index j = 0; j < svd.singularValues().size(); ++j) {
+        const double curvature = svd.singularValues()[j] * svd.singularValues()[j];
+        if (curvature <= curvature_threshold) continue;
+        const double coefficient = svd.matrixU().col(j).dot(gz);
+        newton -= (coefficient / curvature) * svd.matrixU().col(j);
+        flat -= coefficient * svd.matrixU().col(j);
+      }
+    }
   }
   if (flat.norm() > gradient_threshold) {
-    step.p = -Z * (eigen.eigenvectors() * flat);
+    step.p = -Z * flat;
     step.ray = true;
   } else {
-    step.p = Z * (eigen.eigenvectors() * newton);
+    step.p = Z * newton;
   }
   return step;
 }
@@ -216,6 +243,8 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
   const double curvature_threshold = options.curvature_tolerance * std::max(1.0, H.size() ? H.cwiseAbs().maxCoeff() : 0.0);
   const VectorXd row_norms = lc.C.rowwise().norm();
   const std::vector<int> bound_variable = simple_bound_variables(lc.C);
+  std::vector<char> is_curved(static_cast<size_t>(n), 0);
+  for (int j : curved_variables(H)) is_curved[static_cast<size_t>(j)] = 1;
   std::vector<char> in_working(static_cast<size_t>(lc.C.rows()), 0);
   for (int r : working) in_working[static_cast<size_t>(r)] = 1;
   RunOutcome out;
@@ -229,7 +258,7 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
     SubspaceStep step{VectorXd::Zero(n), false};
     if (!at_subspace_minimum) {
       const SubspaceStep free_step =
-          subspace_step(H(sub.free_variables, sub.free_variables), grad_free, factorization.null_space(), curvature_threshold,
+          subspace_step(H, sub.free_variables, is_curved, grad_free, factorization.null_space(), curvature_threshold,
                         options.optimality_tolerance * std::max(1.0, grad.lpNorm<Eigen::Infinity>()));
       step.p(sub.free_variables) = free_step.p;
       step.ray = free_step.ray;
@@ -423,7 +452,9 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
     x(sub.free_variables) += sub.factorization->particular_solution(rhs);
     if (!warm_rows.empty()) {
       const VectorXd grad = qp.hessian * x + qp.gradient;
-      x(sub.free_variables) += subspace_step(qp.hessian(sub.free_variables, sub.free_variables), grad(sub.free_variables),
+      std::vector<char> is_curved(static_cast<size_t>(n), 0);
+      for (int j : curved_variables(qp.hessian)) is_curved[static_cast<size_t>(j)] = 1;
+      x(sub.free_variables) += subspace_step(qp.hessian, sub.free_variables, is_curved, grad(sub.free_variables),
                                              sub.factorization->null_space(), curvature, kInfinity)
                                    .p;
     }
