@@ -97,32 +97,35 @@ struct LinearConstraints {
   const VectorXd& c;
 };
 
-// QR of the working-set matrix' A_W' = [Q1 Q2] [R; 0]: Q2 spans the null space of A_W.
+// QR of the working-set matrix' A_W' = [Q1 Q2] [R; 0]: Q2 spans the null space of A_W. Q is kept
+// as Householder reflectors and applied only to what is needed (forming it would cost O(n^2 w)).
 struct WorkingFactorization {
-  MatrixXd Q;
-  MatrixXd R;
+  Eigen::HouseholderQR<MatrixXd> qr;
+  Index n = 0;
   Index w = 0;
 
-  explicit WorkingFactorization(const MatrixXd& working_transposed) : w(working_transposed.cols()) {
-    const Index n = working_transposed.rows();
-    if (w == 0) {
-      Q = MatrixXd::Identity(n, n);
-      return;
-    }
-    Eigen::HouseholderQR<MatrixXd> qr(working_transposed);
-    Q = qr.householderQ() * MatrixXd::Identity(n, n);
-    R = qr.matrixQR().topRows(w).triangularView<Eigen::Upper>();
+  explicit WorkingFactorization(const MatrixXd& working_transposed)
+      : n(working_transposed.rows()), w(working_transposed.cols()) {
+    if (w > 0) qr.compute(working_transposed);
   }
-  MatrixXd null_space() const { return Q.rightCols(Q.cols() - w); }
+  MatrixXd null_space() const {
+    MatrixXd Z = MatrixXd::Identity(n, n).rightCols(n - w);
+    if (w > 0) Z.applyOnTheLeft(qr.householderQ());
+    return Z;
+  }
+  auto R() const { return qr.matrixQR().topLeftCorner(w, w).triangularView<Eigen::Upper>(); }
   // Multipliers y with A_W' y = -grad (exact when grad is in the range of A_W').
   VectorXd multipliers(const VectorXd& grad) const {
     if (w == 0) return VectorXd();
-    return R.triangularView<Eigen::Upper>().solve(-(Q.leftCols(w).transpose() * grad));
+    const VectorXd qt_grad = qr.householderQ().transpose() * grad;
+    return R().solve(-qt_grad.head(w));
   }
   // Minimum-norm x with A_W x = b: x = Q1 R^-T b.
   VectorXd particular_solution(const VectorXd& b) const {
-    if (w == 0) return VectorXd::Zero(Q.rows());
-    return Q.leftCols(w) * R.transpose().triangularView<Eigen::Lower>().solve(b);
+    VectorXd x = VectorXd::Zero(n);
+    if (w == 0) return x;
+    x.head(w) = qr.matrixQR().topLeftCorner(w, w).transpose().triangularView<Eigen::Lower>().solve(b);
+    return qr.householderQ() * x;
   }
 };
 

@@ -5,7 +5,10 @@
 // for the same purpose: semidefinite Hessians of eq. (6.13)/(6.14) and a warm-started working set).
 //
 // Phase 1 minimises the largest constraint violation t (an LP in (x, t)) with the same
-// iteration; phase 2 then keeps primal feasibility. Positive SEMI-definite H is handled: where the
+// iteration, keeping satisfied simple bounds hard; phase 2 then keeps primal feasibility. Active
+// simple bounds fix their variables, so the null space is computed on the free variables only,
+// and the reduced Hessian is factorised through the variables with curvature only: slacks of
+// zero curvature held at 0 (most of those of (6.13)/(6.14)) cost almost nothing. Positive SEMI-definite H is handled: where the
 // reduced Hessian has zero curvature and the reduced gradient does not vanish, the step is a
 // descent ray that either hits a constraint or proves the QP unbounded. The working set stays
 // linearly independent (a blocking constraint is never in the span of the working set; redundant
