@@ -2,6 +2,9 @@
 // Plain option and summary structs shared by every NLP solver (Ipopt adapter, the seed's SQP),
 // in the style of Ceres' Solver::Options / Solver::Summary.
 
+#include "cyclopt/nlp/ipopt_options.hpp"
+#include "cyclopt/nlp/sqp_options.hpp"
+
 #include <Eigen/Core>
 
 #include <functional>
@@ -11,6 +14,10 @@
 namespace cyclopt::nlp {
 
 enum class SolverKind { ipopt, sqp };
+
+const char* to_string(SolverKind kind);
+// "ipopt" or "sqp"; anything else throws std::invalid_argument naming `field` and the allowed values.
+SolverKind parse_solver_kind(const std::string& text, const std::string& field = "solver");
 
 // One line of progress, handed to SolverOptions::on_iteration after every iteration.
 struct IterationReport {
@@ -31,7 +38,16 @@ struct SolverOptions {
   int print_level = 0;  // 0 = silent
   // Called after every iteration; returning false stops the solver (termination = user_stop).
   std::function<bool(const IterationReport&)> on_iteration;
+  IpoptOptions ipopt;  // used when solver == ipopt
+  SqpOptions sqp;      // used when solver == sqp
 };
+
+// Throws std::invalid_argument naming the first field outside its admissible range.
+void validate(const SolverOptions& options);
+
+// The seed's SQP exactly as Table 6.2 parameterises it: TolOpt = 1e-5, TolCon = 1e-10,
+// MaxIter = 2000, MaxTime = infinity, and the SqpOptions defaults.
+SolverOptions seed_table_6_2_options();
 
 enum class Termination {
   converged,            // KKT point within tolerances
@@ -60,6 +76,10 @@ struct SolverSummary {
   Eigen::VectorXd x;                      // final point
   Eigen::VectorXd equality_multipliers;   // Lagrange multipliers at x
   Eigen::VectorXd inequality_multipliers;
+  Eigen::VectorXd bound_multipliers;      // nu: > 0 at an active upper bound, < 0 at an active lower bound
+  // Sign convention (both solvers): at a KKT point
+  //   grad f + J_eq' equality_multipliers + J_in' inequality_multipliers + bound_multipliers = 0,
+  // inequality_multipliers >= 0 (c_in <= 0); kkt_error is the infinity norm of the left side.
   bool success() const { return termination == Termination::converged || termination == Termination::acceptable; }
 };
 

@@ -1,0 +1,57 @@
+#pragma once
+// Multistart: N local solves from sampled starts, in parallel, reproducibly.
+//
+// Start i draws its x0 from a std::mt19937_64 seeded with base_seed + i, so the starts - and,
+// since every solve is deterministic, the results and their ranking - do not depend on the
+// number of threads. Each thread builds its own Problem from the factory (problems hold
+// workspace and are not shared between threads).
+
+#include "cyclopt/nlp/problem.hpp"
+#include "cyclopt/nlp/solver_options.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace cyclopt::nlp {
+
+struct MultistartOptions {
+  int num_starts = 20;            // N; >= 1
+  std::uint64_t base_seed = 0;    // start i uses seed base_seed + i
+  int num_threads = 0;            // 0: std::thread::hardware_concurrency(); else >= 1
+  // Two successful runs are the same optimum if |f_a - f_b| <= objective_tolerance * max(1, |f_a|)
+  // and |x_a - x_b|_inf <= x_tolerance * max(1, |x_a|_inf). Both >= 0.
+  double objective_tolerance = 1e-6;
+  double x_tolerance = 1e-4;
+  SolverOptions solver;  // for every local solve (on_iteration is called from worker threads)
+};
+
+// One distinct local optimum found by the successful runs.
+struct MultistartOptimum {
+  double objective = 0.0;
+  Eigen::VectorXd x;       // of the best run that reached it
+  std::vector<int> starts;  // indices of the runs that reached it, ascending
+};
+
+struct MultistartResult {
+  std::vector<Eigen::VectorXd> starts;      // x0 of run i
+  std::vector<SolverSummary> runs;          // summary of run i
+  std::vector<int> ranking;                 // successful runs by objective, best first (ties: lower index)
+  std::vector<MultistartOptimum> optima;    // distinct optima, best first
+  int successes = 0;                        // runs with SolverSummary::success()
+  double wall_seconds = 0.0;
+};
+
+using ProblemFactory = std::function<std::unique_ptr<Problem>()>;
+using StartSampler = std::function<Eigen::VectorXd(std::mt19937_64&)>;
+
+// Throws std::invalid_argument for invalid options (naming the field). The sampler is called from
+// worker threads and must not share mutable state.
+MultistartResult multistart(const ProblemFactory& make_problem, const StartSampler& sample_start,
+                            const MultistartOptions& options);
+
+}  // namespace cyclopt::nlp

@@ -1,0 +1,43 @@
+#pragma once
+// Parameters of the seed's SQP line-search method with l1 merit function (seed 001, section
+// 6.2.4, Algorithm 1). Defaults are Table 6.2. The tolerances TolOpt/TolCon, MaxIter and MaxTime
+// of Table 6.2 live in the generic SolverOptions (see seed_table_6_2_options()).
+
+#include "cyclopt/qp/active_set_solver.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+
+namespace cyclopt::nlp {
+
+struct SqpOptions {
+  double initial_penalty = 1.0;         // mu_1 of eq. (6.10); > 0
+  double penalty_increase = 2.0;        // rho, steps 4, 6, 7; > 1
+  double epsilon1 = 0.1;                // step 6 factor; in (0, 1]
+  double epsilon2 = 0.1;                // step 7 factor; in (0, epsilon1] (Algorithm 1: open interval; Table 6.2: equal)
+  double armijo = 1e-4;                 // eta of eq. (6.15)/(6.19); in (0, 1)
+  double backtracking = 0.7;            // tau, backtracking factor; in (0, 1)
+  double relative_min_penalty = 1e-3;   // sigma of eq. (6.9); in (0, 1)
+  double initial_trust_radius = 1.0;    // Delta_1 of the LP (6.14); in [Delta_min, Delta_max]
+  double min_trust_radius = 1e-3;       // Delta_min; from iteration 2 on relative to |d_2|_inf (step 14); > 0
+  double max_trust_radius = 1e3;        // Delta_max; likewise relative; >= Delta_min
+  double step_tolerance = 1e-14;        // TolStep: |d_k|_inf below this stops (step 3); > 0
+  int max_function_evaluations = 10000;  // MaxFun; >= 1
+  // ObjLimit: f below this stops ("objective probably unbounded below"). The OCR of Table 6.2
+  // reads 10^-20, which would stop at once on any problem with negative optimum; a lower limit
+  // of -10^20 is what the rule of step 18 needs, so that is the default here.
+  double objective_limit = -1e20;
+  bool second_order_correction = true;  // EQP projection, eqs. (6.16)-(6.19)
+  // Largest number of backtracking steps (sequence 1, tau, tau^2, ...) before the line search
+  // (steps 9 and 12) gives up; 0.7^100 ~ 3e-16.
+  int max_backtracking_steps = 100;
+  // Optional Hessian of the Lagrangian (eq. (6.23)), e.g. by complex step or AD of the gradients:
+  // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25).
+  std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,
+                                const Eigen::VectorXd& inequality_multipliers)>
+      lagrangian_hessian;
+  qp::ActiveSetOptions qp;  // for the subproblems (6.7), (6.13), (6.14)
+};
+
+}  // namespace cyclopt::nlp

@@ -1,0 +1,337 @@
+#include "cyclopt/nlp/sqp_solver.hpp"
+
+#include "cyclopt/nlp/active_set_projections.hpp"
+#include "cyclopt/nlp/cached_evaluator.hpp"
+#include "cyclopt/nlp/damped_bfgs.hpp"
+#include "cyclopt/nlp/kkt_measures.hpp"
+#include "cyclopt/nlp/l1_merit.hpp"
+#include "cyclopt/nlp/sqp_subproblems.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace cyclopt::nlp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// Step 5: m_k(0) = m_k(d_LP) "within rounding" means no linearised progress is possible.
+constexpr double kStationaryViolationRatio = 1e-12;
+// Merit values are exact only to rounding: near a solution the predicted decrease q_red falls
+// below the noise of phi_1 and every step would be rejected. The decrease tests (6.15)/(6.19)
+// therefore allow this many ulps of |phi_1| of measured increase (a deviation from the seed).
+constexpr double kMeritNoiseUlps = 10.0;
+// Steps 6/7: rho-increases of the penalty before giving up (rho^60 ~ 1e18 for rho = 2).
+constexpr int kMaxPenaltyIncreases = 60;
+
+// A search direction d_k with the penalties that make the l1 merit accept it (steps 3-7).
+struct SearchDirection {
+  VectorXd d;
+  Penalties mu;
+  bool compatible = true;             // the QP (6.7) had a feasible solution
+  std::vector<int> active_inequalities;  // working set of the subproblem solved
+};
+
+class SqpRun {
+ public:
+  SqpRun(Problem& problem, const SolverOptions& options, SolverSummary& summary)
+      : options_(options),
+        sqp_(options.sqp),
+        summary_(summary),
+        evaluator_(problem, summary),
+        n_(problem.num_variables()),
+        m_eq_(problem.num_equalities()),
+        m_in_(problem.num_inequalities()),
+        lower_(problem.lower_bounds()),
+        upper_(problem.upper_bounds()),
+        start_(Clock::now()),
+        trust_radius_(sqp_.initial_trust_radius),
+        min_trust_radius_(sqp_.min_trust_radius),
+        max_trust_radius_(sqp_.max_trust_radius),
+        scalar_penalty_(sqp_.initial_penalty) {}
+
+  void run(const VectorXd& x0);
+
+ private:
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  VectorXd project(const VectorXd& x) const { return x.cwiseMax(lower_).cwiseMin(upper_); }
+  LinearisationPoint here() const { return {current_, x_, lower_, upper_}; }
+  void stop(Termination t, std::string message) {
+    summary_.termination = t;
+    summary_.message = std::move(message);
+  }
+  bool is_kkt_point();
+  std::optional<SearchDirection> search_direction();
+  std::optional<SearchDirection> relaxed_direction();
+  bool evaluates(const VectorXd& x) { return evaluator_.evaluate(project(x), false).ok; }
+  std::optional<VectorXd> line_search(const SearchDirection& dir);
+  ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
+  void finish();
+
+  const SolverOptions& options_;
+  const SqpOptions& sqp_;
+  SolverSummary& summary_;
+  CachedEvaluator evaluator_;
+  const Index n_, m_eq_, m_in_;
+  const VectorXd lower_, upper_;
+  const Clock::time_point start_;
+
+  VectorXd x_;
+  Evaluation current_;  // at x_, with derivatives
+  LeastSquaresMultipliers multipliers_;
+  MatrixXd W_;
+  qp::WorkingSet working_set_;  // of the last compatible QP (6.7): warm start of the next
+  double trust_radius_, min_trust_radius_, max_trust_radius_;
+  double scalar_penalty_;  // max of the previous penalties, eq. (6.10)
+  double q_reduction_ = 0.0;
+};
+
+ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& inequalities) const {
+  ActiveConstraints a{inequalities, {}};
+  for (Index i = 0; i < n_; ++i)
+    if (x[i] <= lower_[i] + options_.constraint_tolerance || x[i] >= upper_[i] - options_.constraint_tolerance)
+      a.bounds.push_back(static_cast<int>(i));
+  return a;
+}
+
+// Step 2: |c_g| <= TolCon, max(0, c_u) <= TolCon, |grad L|_inf <= TolOpt; and multipliers of the
+// right sign (a negative inequality multiplier means the active set is not yet optimal).
+bool SqpRun::is_kkt_point() {
+  summary_.constraint_violation = constraint_violation(current_, x_, lower_, upper_);
+  summary_.kkt_error = lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
+                           .lpNorm<Eigen::Infinity>();
+  const double tol = options_.optimality_tolerance;
+  bool signs = m_in_ == 0 || multipliers_.inequality.minCoeff() >= -tol;
+  for (Index i = 0; i < n_ && signs; ++i) {
+    const double nu = multipliers_.bound[i];
+    const bool at_lower = x_[i] <= lower_[i] + options_.constraint_tolerance;
+    const bool at_upper = x_[i] >= upper_[i] - options_.constraint_tolerance;
+    if ((nu < -tol && !at_lower) || (nu > tol && !at_upper)) signs = false;
+  }
+  return summary_.constraint_violation <= options_.constraint_tolerance && summary_.kkt_error <= tol && signs;
+}
+
+// Step 3: the QP (6.7); penalties (6.9).
+std::optional<SearchDirection> SqpRun::search_direction() {
+  const qp::QpSolution qp = qp::solve_active_set(sqp_subproblem(here(), W_), sqp_.qp, working_set_);
+  if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
+  if (qp.status != qp::QpStatus::optimal) {
+    stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
+    return std::nullopt;
+  }
+  working_set_ = qp.working_set;
+  if (options_.print_level > 1)
+    std::printf("sqp        QP (6.7): %d iterations (%d in phase 1), %zu active\n", qp.iterations, qp.phase_one_iterations,
+                qp.working_set.inequalities.size() + qp.working_set.lower_bounds.size() + qp.working_set.upper_bounds.size());
+  SearchDirection dir{qp.x, {qp.equality_multipliers.cwiseAbs(), qp.inequality_multipliers}, true, qp.working_set.inequalities};
+  const double floor = sqp_.relative_min_penalty * dir.mu.max();  // eq. (6.9a/b)
+  dir.mu.equality = dir.mu.equality.cwiseMax(floor);
+  dir.mu.inequality = dir.mu.inequality.cwiseMax(floor);
+  return dir;
+}
+
+// Steps 4-7: the QP is incompatible. l1 relaxation (6.13) with scalar penalty (6.10), raised by
+// rho until the step achieves a fraction of the LP's (6.14) decrease of linearised violation.
+std::optional<SearchDirection> SqpRun::relaxed_direction() {
+  // eq. (6.10): mu_k = max of the previous penalties (mu_1 initially). A previous maximum of 0
+  // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
+  double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
+  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp);
+  if (lp.status != qp::QpStatus::optimal) {
+    stop(Termination::numerical_failure, std::string("LP (6.14): ") + qp::to_string(lp.status) + ": " + lp.message);
+    return std::nullopt;
+  }
+  const VectorXd zero = VectorXd::Zero(n_);
+  const double m0 = linearized_violation(current_, zero);
+  const double lp_decrease = m0 - linearized_violation(current_, lp.x.head(n_));
+  if (m0 > 0.0 && lp_decrease <= kStationaryViolationRatio * m0) {  // step 5
+    stop(Termination::infeasible, "infeasible stationary point of the constraint violation (Algorithm 1, step 5)");
+    return std::nullopt;
+  }
+  qp::WorkingSet warm;
+  for (int k = 0;; ++k) {
+    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, warm);
+    if (relaxed.status != qp::QpStatus::optimal) {
+      stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
+      return std::nullopt;
+    }
+    warm = relaxed.working_set;
+    if (options_.print_level > 1)
+      std::printf("sqp        relaxed QP (6.13), mu = %.3e: %d iterations, %lld variables; LP (6.14): %d iterations\n", mu,
+                  relaxed.iterations, static_cast<long long>(relaxed.x.size()), lp.iterations);
+    SearchDirection dir{relaxed.x.head(n_), Penalties::uniform(mu, m_eq_, m_in_), false, relaxed.working_set.inequalities};
+    const bool enough_violation_decrease = m0 - linearized_violation(current_, dir.d) >= sqp_.epsilon1 * lp_decrease;  // step 6
+    const bool enough_model_decrease = l1_model(current_, W_, zero, dir.mu) - l1_model(current_, W_, dir.d, dir.mu) >=
+                                       sqp_.epsilon2 * mu * lp_decrease;  // step 7
+    if ((enough_violation_decrease && enough_model_decrease) || k == kMaxPenaltyIncreases) return dir;
+    mu *= sqp_.penalty_increase;
+  }
+}
+
+// Steps 8-13. Returns x_{k+1}, or nothing (termination set) if no acceptable point is found.
+std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
+  const VectorXd zero = VectorXd::Zero(n_);
+  q_reduction_ = l1_model(current_, W_, zero, dir.mu) - l1_model(current_, W_, dir.d, dir.mu);  // step 8
+  const double phi0 = l1_merit(current_, dir.mu);
+  const double noise = kMeritNoiseUlps * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(phi0));
+  const double tau = sqp_.backtracking, eta = sqp_.armijo;
+  // Step 9: shorten until the point has a (real) solution.
+  double beta = 1.0;
+  VectorXd d = dir.d;
+  for (int k = 0; !evaluates(x_ + d); ++k) {
+    if (k == sqp_.max_backtracking_steps) {
+      stop(Termination::evaluation_failure, "no evaluable point along the search direction (Algorithm 1, step 9)");
+      return std::nullopt;
+    }
+    beta *= tau;
+    d = beta * dir.d;
+  }
+  // Step 10: merit test (6.15).
+  if (phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * beta * q_reduction_ - noise) return project(x_ + d);
+  // Step 11: EQP projection (6.16)-(6.18) at x_k + d_k, only if the QP (6.7) was compatible.
+  VectorXd d_soc = zero;
+  if (dir.compatible && sqp_.second_order_correction && evaluator_.evaluate(project(x_ + d), true).ok) {
+    const Evaluation& trial = evaluator_.evaluation();
+    std::vector<int> active = dir.active_inequalities;
+    for (Index i = 0; i < m_in_; ++i)
+      if (trial.inequalities[i] > 0.0 && std::find(active.begin(), active.end(), i) == active.end())
+        active.push_back(static_cast<int>(i));
+    d_soc = second_order_correction(trial, active);
+    if (!evaluates(x_ + d + d_soc)) d_soc = zero;
+  }
+  // Step 12: backtracking on (6.19); failing evaluations count as "not acceptable".
+  double alpha = 1.0;
+  for (int k = 0; k <= sqp_.max_backtracking_steps; ++k, alpha *= tau) {
+    const VectorXd trial = project(x_ + alpha * d + alpha * alpha * d_soc);
+    if (evaluates(trial) && phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * alpha * beta * q_reduction_ - noise)
+      return trial;  // step 13
+  }
+  stop(Termination::numerical_failure, "line search found no sufficient decrease of the l1 merit (Algorithm 1, step 12)");
+  return std::nullopt;
+}
+
+void SqpRun::run(const VectorXd& x0) {
+  x_ = project(x0);
+  if (!evaluator_.evaluate(x_, true).ok) {  // step 1
+    stop(Termination::evaluation_failure, "evaluation failed at the start point: " + evaluator_.evaluate(x_, true).reason);
+    summary_.x = x_;
+    return;
+  }
+  current_ = evaluator_.evaluation();
+  std::vector<int> initially_active;
+  for (Index i = 0; i < m_in_; ++i)
+    if (current_.inequalities[i] >= -options_.constraint_tolerance) initially_active.push_back(static_cast<int>(i));
+  multipliers_ = least_squares_multipliers(current_, active_at(x_, initially_active));
+  const bool identity_start = !sqp_.lagrangian_hessian;
+  W_ = identity_start ? MatrixXd::Identity(n_, n_)
+                      : clamped_hessian(sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality));  // (6.24)
+
+  for (int k = 1;; ++k) {
+    if (is_kkt_point()) {  // step 2
+      stop(Termination::converged, "KKT point (Algorithm 1, step 2)");
+      break;
+    }
+    // Step 18 (checked before the work of iteration k).
+    if (k > options_.max_iterations) {
+      stop(Termination::max_iterations, "MaxIter reached");
+      break;
+    }
+    if (elapsed() > options_.max_wall_seconds) {
+      stop(Termination::time_limit, "MaxTime reached");
+      break;
+    }
+    if (summary_.function_evaluations + summary_.jacobian_evaluations > sqp_.max_function_evaluations) {
+      stop(Termination::max_iterations, "MaxFun reached");
+      break;
+    }
+    if (current_.objective < sqp_.objective_limit) {
+      stop(Termination::numerical_failure, "objective below ObjLimit: probably unbounded below");
+      break;
+    }
+    const std::optional<SearchDirection> dir = search_direction();  // steps 3-7
+    if (!dir) break;
+    if (dir->compatible && dir->d.lpNorm<Eigen::Infinity>() <= sqp_.step_tolerance) {  // step 3
+      const bool feasible = summary_.constraint_violation <= options_.constraint_tolerance;
+      stop(feasible ? Termination::acceptable : Termination::numerical_failure,
+           "step below TolStep: potential KKT point (Algorithm 1, step 3)");
+      break;
+    }
+    const std::optional<VectorXd> next = line_search(*dir);  // steps 8-13
+    if (!next) break;
+    const VectorXd step = *next - x_;
+    const double step_norm = step.lpNorm<Eigen::Infinity>();
+    const double actual_reduction = l1_merit(current_, dir->mu) - l1_merit(evaluator_.evaluation(), dir->mu);
+    if (k == 2) {  // step 14: trust-region limits relative to the size of the second step
+      min_trust_radius_ *= step_norm;
+      max_trust_radius_ *= step_norm;
+    }
+    // Step 15. The OCR reads |x_k|_2 here; the trust region of [48] follows the step length, so
+    // |d_k|_inf (the norm of (6.14d)) is used.
+    const double factor = actual_reduction < 0.25 * q_reduction_ ? 0.5 : actual_reduction > 0.75 * q_reduction_ ? 2.0 : 1.0;
+    trust_radius_ = std::min(max_trust_radius_, std::max(min_trust_radius_, factor * step_norm));
+    // Step 16: derivatives and least-squares multipliers (6.26) at x_{k+1}.
+    if (!evaluator_.evaluate(*next, true).ok) {
+      stop(Termination::evaluation_failure, "derivatives failed at an accepted point: " + evaluator_.evaluate(*next, true).reason);
+      break;
+    }
+    const Evaluation& e = evaluator_.evaluation();
+    LeastSquaresMultipliers y = least_squares_multipliers(e, active_at(*next, dir->active_inequalities));
+    // Step 17: y_k of (6.20) with the new multipliers at both points (bound terms cancel).
+    const VectorXd gradient_change = lagrangian_gradient(e, y.equality, y.inequality, {}) -
+                                     lagrangian_gradient(current_, y.equality, y.inequality, {});
+    if (k == 1 && identity_start)
+      W_ = scaled_identity_update(step, gradient_change);  // (6.25)
+    else
+      damped_bfgs_update(W_, step, gradient_change);  // (6.22)
+    scalar_penalty_ = dir->mu.max();
+    x_ = *next;
+    current_ = e;
+    multipliers_ = std::move(y);
+    summary_.iterations = k;
+    IterationReport report{k, current_.objective, constraint_violation(current_, x_, lower_, upper_),
+                           lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
+                               .lpNorm<Eigen::Infinity>(),
+                           step_norm, elapsed()};
+    if (options_.print_level > 0)
+      std::printf("sqp %4d  f %+.10e  viol %.3e  kkt %.3e  step %.3e  %s\n", k, report.objective, report.constraint_violation,
+                  report.kkt_error, report.step_norm, dir->compatible ? "" : "(l1-relaxed)");
+    if (options_.on_iteration && !options_.on_iteration(report)) {
+      is_kkt_point();
+      stop(Termination::user_stop, "stopped by on_iteration");
+      break;
+    }
+  }
+  finish();
+}
+
+void SqpRun::finish() {
+  summary_.x = x_;
+  summary_.objective = current_.objective;
+  summary_.equality_multipliers = multipliers_.equality;
+  summary_.inequality_multipliers = multipliers_.inequality;
+  summary_.bound_multipliers = multipliers_.bound;
+  summary_.wall_seconds = elapsed();
+}
+
+}  // namespace
+
+SolverSummary solve_with_sqp(Problem& problem, const SolverOptions& options, const VectorXd& x0) {
+  validate(options);
+  if (x0.size() != problem.num_variables())
+    throw std::invalid_argument("x0: size must equal num_variables() = " + std::to_string(problem.num_variables()) +
+                                ", got " + std::to_string(x0.size()));
+  SolverSummary summary;
+  SqpRun(problem, options, summary).run(x0);
+  return summary;
+}
+
+}  // namespace cyclopt::nlp

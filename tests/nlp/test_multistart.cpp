@@ -1,0 +1,77 @@
+// Multistart: same seeds give the same starts, results and ranking for any number of threads;
+// duplicates of one optimum are merged.
+#include "autodiff_problem.hpp"
+
+#include "cyclopt/nlp/multistart.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace {
+
+using namespace cyclopt::nlp;
+
+// Four local minima near (+-1, +-1), tilted so that their objectives differ; one inequality.
+struct FourWells {
+  static constexpr int n = 2, m_eq = 0, m_in = 1;
+  template <class T> static void evaluate(const T* x, T& f, T*, T* in) {
+    f = (x[0] * x[0] - 1.0) * (x[0] * x[0] - 1.0) + (x[1] * x[1] - 1.0) * (x[1] * x[1] - 1.0) + 0.1 * x[0] + 0.05 * x[1];
+    in[0] = x[0] + x[1] - 1.5;
+  }
+};
+
+MultistartResult run(SolverKind kind, int threads) {
+  MultistartOptions o;
+  o.num_starts = 24;
+  o.base_seed = 1234;
+  o.num_threads = threads;
+  o.solver.solver = kind;
+  return multistart([] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(); },
+                    [](std::mt19937_64& rng) {
+                      std::uniform_real_distribution<double> u(-2.0, 2.0);
+                      Eigen::VectorXd x(2);
+                      x[0] = u(rng);
+                      x[1] = u(rng);
+                      return x;
+                    },
+                    o);
+}
+
+TEST(Multistart, ReproducibleRegardlessOfThreadCountAndMergesDuplicates) {
+  for (SolverKind kind : {SolverKind::sqp, SolverKind::ipopt}) {
+    const MultistartResult one = run(kind, 1);
+    const MultistartResult many = run(kind, 3);
+    const MultistartResult all = run(kind, 0);
+    std::printf("multistart %s: %d/%d successes, %zu distinct optima, best f = %.10f, %.3f s (1 thread) %.3f s (all)\n",
+                to_string(kind), one.successes, static_cast<int>(one.runs.size()), one.optima.size(),
+                one.optima.empty() ? 0.0 : one.optima.front().objective, one.wall_seconds, all.wall_seconds);
+    for (const MultistartResult* other : {&many, &all}) {
+      ASSERT_EQ(one.ranking, other->ranking);
+      for (size_t i = 0; i < one.runs.size(); ++i) {
+        EXPECT_EQ(one.starts[i], other->starts[i]);
+        EXPECT_EQ(one.runs[i].x, other->runs[i].x);  // bitwise: deterministic solves
+      }
+      ASSERT_EQ(one.optima.size(), other->optima.size());
+      for (size_t k = 0; k < one.optima.size(); ++k) EXPECT_EQ(one.optima[k].starts, other->optima[k].starts);
+    }
+    EXPECT_EQ(one.successes, 24);
+    // Wells at (+-1, +-1) minus the one cut off by x1 + x2 <= 1.5, plus possibly a constrained point.
+    EXPECT_GE(one.optima.size(), 3u);
+    size_t merged = 0;
+    for (const MultistartOptimum& o : one.optima) merged += o.starts.size();
+    EXPECT_EQ(merged, 24u);
+    for (size_t k = 1; k < one.optima.size(); ++k) EXPECT_LE(one.optima[k - 1].objective, one.optima[k].objective);
+    // The best well is (-1, -1): f = -0.15 to first order.
+    EXPECT_LT(one.optima.front().x[0], 0.0);
+    EXPECT_LT(one.optima.front().x[1], 0.0);
+  }
+}
+
+TEST(Multistart, RejectsBadOptions) {
+  MultistartOptions o;
+  o.num_starts = 0;
+  EXPECT_THROW(multistart({}, {}, o), std::invalid_argument);
+}
+
+}  // namespace

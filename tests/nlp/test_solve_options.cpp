@@ -1,0 +1,120 @@
+// The solve() entry point, option parsing/validation and the iteration callback.
+#include "hock_schittkowski.hpp"
+
+#include "cyclopt/nlp/solve.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace cyclopt::nlp;
+using cyclopt::nlp::testing::hock_schittkowski_problems;
+using cyclopt::nlp::testing::vec;
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SolverKind, ParsesAndRejectsWithFieldAndAllowedValues) {
+  EXPECT_EQ(parse_solver_kind("ipopt"), SolverKind::ipopt);
+  EXPECT_EQ(parse_solver_kind("sqp"), SolverKind::sqp);
+  EXPECT_STREQ(to_string(SolverKind::sqp), "sqp");
+  const std::string m = message_of([] { parse_solver_kind("fmincon", "spec.solver"); });
+  EXPECT_NE(m.find("spec.solver"), std::string::npos);
+  EXPECT_NE(m.find("ipopt, sqp"), std::string::npos);
+}
+
+TEST(SolverOptions, ValidationNamesTheField) {
+  auto problem = hock_schittkowski_problems()[2].make();
+  SolverOptions o;
+  o.optimality_tolerance = -1;
+  EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("optimality_tolerance"), std::string::npos);
+  o = {};
+  o.solver = SolverKind::sqp;
+  o.sqp.epsilon2 = 0.5;  // must be <= epsilon1 = 0.1
+  EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("sqp.epsilon2"), std::string::npos);
+  o = {};
+  o.ipopt.mu_strategy = "probing";
+  EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("ipopt.mu_strategy"), std::string::npos);
+  EXPECT_NE(message_of([&] { solve(*problem, SolverOptions{}, vec({1, 2, 3})); }).find("x0"), std::string::npos);
+}
+
+TEST(SolverOptions, SeedTable62Defaults) {
+  const SolverOptions o = seed_table_6_2_options();
+  EXPECT_EQ(o.solver, SolverKind::sqp);
+  EXPECT_EQ(o.optimality_tolerance, 1e-5);
+  EXPECT_EQ(o.constraint_tolerance, 1e-10);
+  EXPECT_EQ(o.max_iterations, 2000);
+  EXPECT_EQ(o.sqp.backtracking, 0.7);
+  EXPECT_EQ(o.sqp.relative_min_penalty, 1e-3);
+  EXPECT_EQ(o.sqp.max_function_evaluations, 10000);
+  EXPECT_NO_THROW(validate(o));
+}
+
+TEST(IterationCallback, ReportsEveryIterationAndStopsOnFalse) {
+  for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
+    auto problem = hock_schittkowski_problems()[13].make();  // HS100
+    SolverOptions o;
+    o.solver = kind;
+    int calls = 0;
+    o.on_iteration = [&](const IterationReport& r) {
+      EXPECT_GE(r.wall_seconds, 0.0);
+      return ++calls < 3;
+    };
+    const SolverSummary s = solve(*problem, o, vec({1, 2, 0, 4, 0, 1, 1}));
+    EXPECT_EQ(s.termination, Termination::user_stop) << to_string(kind);
+    EXPECT_EQ(calls, 3) << to_string(kind);
+  }
+}
+
+TEST(IterationLimit, IsReportedAsMaxIterations) {
+  for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
+    auto problem = hock_schittkowski_problems()[13].make();
+    SolverOptions o;
+    o.solver = kind;
+    o.max_iterations = 2;
+    const SolverSummary s = solve(*problem, o, vec({1, 2, 0, 4, 0, 1, 1}));
+    EXPECT_EQ(s.termination, Termination::max_iterations) << to_string(kind);
+    EXPECT_LE(s.iterations, 2);
+  }
+}
+
+TEST(SqpInitialHessian, CallerSuppliedLagrangianHessianIsUsed) {
+  // HS6: f = (1 - x1)^2, c = 10 (x2 - x1^2): Hessian of the Lagrangian diag(2 - 20 y, 0).
+  auto problem = hock_schittkowski_problems()[2].make();
+  SolverOptions o;
+  o.solver = SolverKind::sqp;
+  int calls = 0;
+  o.sqp.lagrangian_hessian = [&](const Eigen::VectorXd&, const Eigen::VectorXd& y_eq, const Eigen::VectorXd&) {
+    ++calls;
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(2, 2);
+    H(0, 0) = 2.0 - 20.0 * y_eq[0];
+    return H;
+  };
+  const SolverSummary s = solve(*problem, o, vec({-1.2, 1}));
+  ASSERT_TRUE(s.success()) << s.message;
+  EXPECT_EQ(calls, 1);
+  EXPECT_NEAR(s.objective, 0.0, 1e-10);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(TimeLimit, IsReportedAsTimeLimit) {
+  for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
+    auto problem = hock_schittkowski_problems()[13].make();
+    SolverOptions o;
+    o.solver = kind;
+    o.max_wall_seconds = 1e-9;
+    const SolverSummary s = solve(*problem, o, vec({1, 2, 0, 4, 0, 1, 1}));
+    EXPECT_EQ(s.termination, Termination::time_limit) << to_string(kind) << ": " << s.message;
+  }
+}
+
+}  // namespace
