@@ -1,6 +1,6 @@
 #pragma once
 // Part B parametrisation: the hip angle as a virtual constraint alpha = b(phi) with phi as the
-// phase variable, b a Bezier polynomial of degree 9 in s = phi / 2 pi (wrapped to [0, 1) for a
+// phase variable, b a Bezier polynomial of degree 9 in s = phi / 2 pi (wrapped to [0, 1] for a
 // sequence of swings). The first three and last three coefficients are zero, so
 // alpha = alpha' = alpha'' = 0 in the handstand at both ends (seed 000, eq. 3.10-3.11, and a
 // C^2-periodic continuation); four free coefficients remain. By the convex-hull property,
@@ -40,7 +40,9 @@ BezierCoefficients<T> bezier_from_free(const Eigen::Matrix<T, kFreeBezierCoeffic
 template <class R, class C, class S>
 std::array<R, 4> bezier_hip_angle(const BezierCoefficients<C>& coefficients, const S& phi) {
   const S u = phi / kTwoPi;
-  const S s = u - std::floor(ad::value(u));
+  // Wrap into [0, 1] for a sequence of swings; phi = 2 pi itself stays at s = 1 (end of the swing).
+  const double shift = ad::value(u) >= 0.0 && ad::value(u) <= 1.0 ? 0.0 : std::floor(ad::value(u));
+  const S s = u - shift;
   std::array<R, 4> out;
   std::array<C, kBezierDegree + 1> diff;
   for (int i = 0; i <= kBezierDegree; ++i) diff[static_cast<std::size_t>(i)] = coefficients[i];
