@@ -1,6 +1,7 @@
 // Part B groundwork: the zero dynamics on alpha = b(phi) agree with the full model driven by the
 // virtual-constraint torque law (an independent integration in time with event location), and the
 // minimum-jerk NLP's exact derivatives agree with central differences.
+#include "cyclopt/giant_swing/closed_swing_search.hpp"
 #include "cyclopt/giant_swing/minimum_jerk_problem.hpp"
 #include "cyclopt/giant_swing/one_step_map.hpp"
 
@@ -71,6 +72,27 @@ TEST(MinimumJerkProblem, ReportsAReversingSwingAsEvaluationFailure) {
   EXPECT_FALSE(problem.evaluate(Eigen::Vector4d::Zero(), true, e).ok);  // straight body: friction stops it
   EXPECT_EQ(problem.num_inequalities(), 120);
   EXPECT_EQ(problem.lower_bounds()[0], default_task(TaskKind::single_swing).ranges.alpha_min);
+}
+
+TEST(ClosedSwingSearch, EveryTrialIsClosedAndJerkDecreases) {
+  MinimumJerkProblem problem(kModel, default_task(TaskKind::single_swing), 120);
+  const auto start = scale_to_close(problem, Eigen::Vector4d(0.0, 0.0, 1.0, 1.0), 1.2);
+  ASSERT_TRUE(start.has_value());
+  nlp::Evaluation e;
+  ASSERT_TRUE(problem.evaluate(*start, false, e).ok);
+  EXPECT_LT(std::abs(e.equalities[0]), 1e-13);
+  const double start_jerk = e.objective;
+  nlp::NelderMeadOptions o;
+  o.initial_step = 0.3;
+  o.max_evaluations = 30;
+  const ClosedSwingSearchResult r = minimise_jerk_over_closed_swings(problem, Eigen::Vector4d(0.0, 0.0, 1.0, 1.0), o);
+  ASSERT_TRUE(r.ok);
+  ASSERT_TRUE(problem.evaluate(r.coefficients, false, e).ok);
+  std::printf("closed-swing search: jerk %.2f -> %.2f in %d trials (%d integrations)\n", start_jerk, r.jerk,
+              r.search.evaluations, r.integrations);
+  EXPECT_LT(std::abs(e.equalities[0]), 1e-13);
+  EXPECT_NEAR(e.objective, r.jerk, 1e-9 * r.jerk);
+  EXPECT_LT(r.jerk, start_jerk);
 }
 
 }  // namespace

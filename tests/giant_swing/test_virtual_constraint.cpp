@@ -2,6 +2,7 @@
 // of eq. 3.9 with PD error feedback. A closed giant swing from the handstand, its Floquet
 // multipliers against a finite-difference one-step map, and a periodic sequence of 12 swings
 // (issue acceptance 2 and 4).
+#include "cyclopt/giant_swing/minimum_jerk_problem.hpp"
 #include "cyclopt/giant_swing/one_step_map.hpp"
 #include "cyclopt/giant_swing/virtual_constraint.hpp"
 
@@ -28,19 +29,13 @@ VirtualConstraintTorque law_for(double a) {
   return VirtualConstraintTorque(bezier_from_free<double>(Eigen::Vector4d(0.0, 0.0, a, a)), kKp, kKd, kModel);
 }
 
-// The amplitude a for which phi' returns to omega after one swing (secant iteration).
-double closing_amplitude() {
-  auto miss = [](double a) { return one_step_map(kModel, law_for(a), kHandstand, tight_options()).next[0] / kReferenceRate - 1.0; };
-  double a0 = 1.15, a1 = 1.25, f0 = miss(a0), f1 = miss(a1);
-  for (int i = 0; i < 30 && std::abs(f1) > 1e-13; ++i) {
-    const double a2 = a1 - f1 * (a1 - a0) / (f1 - f0);
-    a0 = a1, f0 = f1, a1 = a2, f1 = miss(a1);
-  }
-  return a1;
-}
-
+// The amplitude a for which phi' returns to omega after one swing (Newton on the zero dynamics).
 double amplitude() {
-  static const double a = closing_amplitude();
+  static const double a = [] {
+    MinimumJerkProblem problem(kModel, default_task(TaskKind::single_swing), 400);
+    const auto x = scale_to_close(problem, Eigen::Vector4d(0.0, 0.0, 1.0, 1.0), 1.2);
+    return x ? (*x)[2] : 0.0;
+  }();
   return a;
 }
 

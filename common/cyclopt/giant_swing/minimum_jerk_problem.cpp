@@ -54,3 +54,22 @@ nlp::EvaluationStatus MinimumJerkProblem::evaluate(const Eigen::VectorXd& x, boo
 }
 
 }  // namespace cyclopt::giant_swing
+
+namespace cyclopt::giant_swing {
+
+std::optional<Eigen::VectorXd> scale_to_close(MinimumJerkProblem& problem, const Eigen::VectorXd& shape,
+                                              double initial_amplitude, double tolerance, int max_iterations) {
+  double a = initial_amplitude;
+  nlp::Evaluation e;
+  for (int i = 0; i < max_iterations; ++i) {
+    if (!problem.evaluate(a * shape, true, e).ok) return std::nullopt;
+    const double c = e.equalities[0];
+    if (std::abs(c) <= tolerance) return Eigen::VectorXd(a * shape);
+    const double slope = e.equality_jacobian.row(0).dot(shape);
+    if (slope == 0.0) return std::nullopt;
+    a -= c / slope;
+  }
+  return std::nullopt;
+}
+
+}  // namespace cyclopt::giant_swing

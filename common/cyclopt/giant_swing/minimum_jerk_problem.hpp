@@ -15,6 +15,8 @@
 #include "cyclopt/giant_swing/zero_dynamics.hpp"
 #include "cyclopt/nlp/problem.hpp"
 
+#include <optional>
+
 namespace cyclopt::giant_swing {
 
 class MinimumJerkProblem : public nlp::Problem {
@@ -42,5 +44,16 @@ class MinimumJerkProblem : public nlp::Problem {
   double min_rate_;
   int integrations_ = 0;
 };
+
+}  // namespace cyclopt::giant_swing
+
+namespace cyclopt::giant_swing {
+
+// Newton on the amplitude a of x = a * shape until the boundary equality phi'(2 pi) = omega holds
+// (exact derivative from the problem); |equality| <= tolerance on success. A closed swing on its
+// own and a feasible start point for an NLP solver. Returns nullopt if it does not converge.
+std::optional<Eigen::VectorXd> scale_to_close(MinimumJerkProblem& problem, const Eigen::VectorXd& shape,
+                                              double initial_amplitude, double tolerance = 1e-13,
+                                              int max_iterations = 30);
 
 }  // namespace cyclopt::giant_swing

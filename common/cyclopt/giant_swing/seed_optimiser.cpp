@@ -40,9 +40,13 @@ SeedMethodResult optimise_seed_method(const Model& model, const TaskSpec& spec) 
         }
         const nlp::NelderMeadSummary s = nlp::nelder_mead(score_of, result.torque.support_values, nm);
         stage.evaluations += s.evaluations;
-        if (!(s.f < best) || s.x == result.torque.support_values) break;
-        best = s.f;
-        result.torque.support_values = s.x;
+        const double change = (s.x - result.torque.support_values).lpNorm<Eigen::Infinity>();
+        const bool moved = change > o.same_vector_tolerance * std::max(1.0, s.x.lpNorm<Eigen::Infinity>());
+        if (s.f < best) {
+          best = s.f;
+          result.torque.support_values = s.x;
+        }
+        if (!moved || stage.evaluations >= o.max_evaluations_per_stage) break;
       }
       stage.score = best;
       result.stages.push_back(stage);

@@ -2,7 +2,8 @@
 // The seed's method end to end (seed 000, ch. 4.3): the multistage loop around Nelder-Mead.
 //   1. From the start vector build a simplex with edge lambda and minimise; while the result
 //      differs from the start vector, restart from it.
-//   2. When it no longer moves, halve lambda and go to 1, until lambda < min_step.
+//   2. When it no longer moves (or the stage budget is spent), halve lambda and go to 1, until
+//      lambda < min_step.
 //   3. Then double the support points (4 -> 8 -> 16 -> 32, same function), reset lambda, go to 1.
 // Every evaluation integrates the model once (swing_simulation.hpp) and scores it (eq. 4.9, 4.10,
 // 4.14).

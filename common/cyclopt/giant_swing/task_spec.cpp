@@ -55,8 +55,8 @@ constexpr int kMaxRounds = 50;
 
 OptimiserSettings optimiser_from_json(const json& j, const std::string& path) {
   check_keys(j, path,
-             {"support_points", "max_support_points", "initial_step", "min_step", "f_tolerance",
-              "max_evaluations_per_run", "max_evaluations", "start_vector"});
+             {"support_points", "max_support_points", "initial_step", "min_step", "f_tolerance", "same_vector_tolerance",
+              "max_evaluations_per_run", "max_evaluations_per_stage", "max_evaluations", "start_vector"});
   OptimiserSettings o;
   auto power_field = [&](const char* key, int& out) {
     if (!j.contains(key)) return;
@@ -70,7 +70,11 @@ OptimiserSettings optimiser_from_json(const json& j, const std::string& path) {
   if (j.contains("initial_step")) o.initial_step = number(j, "initial_step", path, 1e-6, 1e4, "Nm");
   if (j.contains("min_step")) o.min_step = number(j, "min_step", path, 1e-9, 1e4, "Nm");
   if (j.contains("f_tolerance")) o.f_tolerance = number(j, "f_tolerance", path, 1e-16, 1.0, "");
+  if (j.contains("same_vector_tolerance"))
+    o.same_vector_tolerance = number(j, "same_vector_tolerance", path, 0.0, 1.0, "");
   if (j.contains("max_evaluations_per_run")) o.max_evaluations_per_run = integer(j, "max_evaluations_per_run", path, 10, 100000000);
+  if (j.contains("max_evaluations_per_stage"))
+    o.max_evaluations_per_stage = integer(j, "max_evaluations_per_stage", path, 10, 100000000);
   if (j.contains("max_evaluations")) o.max_evaluations = integer(j, "max_evaluations", path, 10, 1000000000);
   if (j.contains("start_vector")) {
     const json& v = j.at("start_vector");
@@ -192,7 +196,9 @@ json to_json(const TaskSpec& s) {
                     {"initial_step", o.initial_step},
                     {"min_step", o.min_step},
                     {"f_tolerance", o.f_tolerance},
+                    {"same_vector_tolerance", o.same_vector_tolerance},
                     {"max_evaluations_per_run", o.max_evaluations_per_run},
+                    {"max_evaluations_per_stage", o.max_evaluations_per_stage},
                     {"max_evaluations", o.max_evaluations}};
   if (o.start_vector) j["optimiser"]["start_vector"] = std::vector<double>(o.start_vector->begin(), o.start_vector->end());
   return j;

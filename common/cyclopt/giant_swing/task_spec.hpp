@@ -35,7 +35,11 @@ struct OptimiserSettings {
   double initial_step = 20.0;      // Nm, edge lambda of the start simplex (eq. 4.2)
   double min_step = 1.0;           // Nm, halving of lambda stops below this
   double f_tolerance = 1e-10;      // Nelder-Mead spread tolerance
+  // Start and end vector count as equal (ch. 4.3, step 2) when they differ by less than this,
+  // relative; the seed compared float vectors (~1e-7).
+  double same_vector_tolerance = 1e-6;
   int max_evaluations_per_run = 4000;
+  int max_evaluations_per_stage = 8000;  // per value of lambda: then halve it anyway
   int max_evaluations = 60000;     // whole loop
   std::optional<Eigen::VectorXd> start_vector;  // Nm at the support points; default: zero (ch. 5)
 };
