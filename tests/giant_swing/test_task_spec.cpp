@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <functional>
+
 namespace cyclopt::giant_swing {
 namespace {
 
@@ -62,6 +65,53 @@ TEST(TaskSpec, RejectsBadInputNamingTheField) {
                   "task.optimiser.min_step", "initial_step");
   expect_rejected(json{{"task", "single_swing"}, {"speed", 1}}, "task.speed", "allowed");
   expect_rejected(json::array(), "task", "JSON object");
+}
+
+}  // namespace
+}  // namespace cyclopt::giant_swing
+
+namespace cyclopt::giant_swing {
+namespace {
+
+// proto/schemas/giant_swing_task.schema.json states the same fields and ranges as the parser.
+TEST(TaskSpec, SchemaMatchesTheParser) {
+  std::ifstream in(std::string(CYCLOPT_SOURCE_DIR) + "/proto/schemas/giant_swing_task.schema.json");
+  ASSERT_TRUE(in) << "schema file missing";
+  const json schema = json::parse(in);
+  auto check_numbers = [](const json& properties, const std::function<json(const std::string&, const json&)>& wrap,
+                          const std::string& path) {
+    for (const auto& [key, p] : properties.items()) {
+      if (!p.contains("minimum")) continue;
+      const bool integer = p["type"] == "integer";
+      EXPECT_NO_THROW(task_spec_from_json(wrap(key, p["minimum"]))) << key;
+      EXPECT_NO_THROW(task_spec_from_json(wrap(key, p["maximum"]))) << key;
+      const double hi = p["maximum"].get<double>();
+      const json above = integer ? json(p["maximum"].get<long long>() + 1) : json(hi * (1 + 1e-9) + 1e-12);
+      try {
+        task_spec_from_json(wrap(key, above));
+        ADD_FAILURE() << key << " accepted above its maximum";
+      } catch (const TaskSpecError& e) {
+        EXPECT_EQ(e.field(), path + key) << e.what();
+      }
+    }
+  };
+  // "rounds" > 1 needs a periodic sequence; min_step <= initial_step is a cross-field rule.
+  check_numbers(schema["properties"], [](const std::string& k, const json& v) {
+    return json{{"task", "periodic_sequence"}, {k, v}};
+  }, "task.");
+  check_numbers(schema["properties"]["weights"]["properties"], [](const std::string& k, const json& v) {
+    return json{{"task", "single_swing"}, {"weights", {{k, v}}}};
+  }, "task.weights.");
+  check_numbers(schema["properties"]["optimiser"]["properties"], [](const std::string& k, const json& v) {
+    json o = {{k, v}};
+    if (k == "min_step") o["initial_step"] = 1e4;
+    if (k == "initial_step") o["min_step"] = 1e-9;
+    return json{{"task", "single_swing"}, {"optimiser", o}};
+  }, "task.optimiser.");
+  for (const auto& [key, p] : schema["properties"].items())
+    EXPECT_TRUE(to_json(default_task(TaskKind::single_swing)).contains(key) || key == "alpha_ddot_max_deg_s2" ||
+                key == "name")
+        << key << " in the schema but not written by to_json";
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ OneStepJacobian one_step_jacobian(const Model& model, const HipTorqueLaw& torque
     Eigen::Map<Eigen::Matrix4d>(dy.data() + 4) = A * Eigen::Map<const Eigen::Matrix4d>(y.data() + 4);
     return dy;
   };
-  auto events = [&](double, const Y& y) { return Eigen::Vector3d(kTwoPi - y[0], y[2], 1.0); };
+  auto events = [&](double, const Y& y) { return Eigen::Vector2d(kTwoPi - y[0], y[2]); };  // 2 pi reached, phi' <= 0
   Y y0;
   y0.head<4>() = state_on_section(s);
   Eigen::Map<Eigen::Matrix4d>(y0.data() + 4).setIdentity();
