@@ -54,6 +54,7 @@ SeedMethodResult optimise_seed_method(const Model& model, const TaskSpec& spec) 
     }
     if (result.budget_exhausted || 2 * result.torque.support_values.size() > o.max_support_points) break;
     result.torque = refined(result.torque);  // step 3
+    best = score_of(result.torque.support_values);  // same function, but rounding can flip an event race
   }
   result.best = evaluate_task(model, spec, result.torque);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
