@@ -1,12 +1,17 @@
 #include "cyclopt/service/builtin_job_kinds.hpp"
 
 #include "cyclopt/service/foot_sweep_kind.hpp"
+#include "cyclopt/service/walker_job_kinds.hpp"
 
 namespace cyclopt::service {
 
 JobKindRegistry builtin_job_kinds() {
   JobKindRegistry registry;
   registry.add(foot_sweep_kind());
+  registry.add(walker_evaluate_kind());
+  registry.add(walker_optimise_kind());
+  registry.add(walker_multistart_kind());
+  registry.add(walker_sweep_kind());
   return registry;
 }
 

@@ -4,6 +4,7 @@
 #include "cyclopt/foot/foot_report.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
 
 #include <chrono>
 #include <thread>
@@ -19,15 +20,6 @@ struct FootSweep {
   int samples = 13;
   int point_delay_ms = 0;
 };
-
-foot::FootSpec base_foot(const nlohmann::json& v) {
-  if (v.is_string()) try {
-      return foot::foot_preset(v.get<std::string>()).spec;
-    } catch (const SpecError& e) {
-      throw SpecError("foot", e.what());
-    }
-  return foot::foot_spec_from_json(object_value(v, "foot"), "foot");
-}
 
 // The foot at one grid value; throws SpecError (with the foot's own field names) if invalid.
 foot::FootSpec foot_at(const FootSweep& s, double value) {
@@ -47,7 +39,7 @@ foot::FootSpec foot_at(const FootSweep& s, double value) {
 FootSweep parse(const nlohmann::json& spec) {
   FootSweep s;
   if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
-  s.base = base_foot(spec["foot"]);
+  s.base = foot_value(spec["foot"], "foot");
   if (!spec.contains("sweep")) throw SpecError("sweep", "is required: {\"parameter\": ..., \"values\": \"lo:step:hi\"}");
   const nlohmann::json& sw = object_value(spec["sweep"], "sweep");
   reject_unknown_keys(sw, "sweep", {"parameter", "values"});

@@ -47,7 +47,7 @@ const std::vector<std::string>& known_tasks() {
   return v;
 }
 const std::vector<std::string>& known_objectives() {
-  static const std::vector<std::string> v = {"cost_of_transport", "torque_squared", "energy"};
+  static const std::vector<std::string> v = {"f_mech", "f_usq"};
   return v;
 }
 
@@ -94,8 +94,8 @@ JobLimits effective_limits(const nlohmann::json& spec, const JobLimits& caps) {
   return l;
 }
 
-nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec) {
-  nlp::SolverOptions o;
+nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec, const nlp::SolverOptions& base) {
+  nlp::SolverOptions o = base;
   if (!spec.contains("solver")) return o;
   const nlohmann::json& s = spec["solver"];
   if (s.contains("solver")) o.solver = s["solver"] == "sqp" ? nlp::SolverKind::sqp : nlp::SolverKind::ipopt;

@@ -7,8 +7,8 @@
 //    "limits": {"max_wall_seconds": 600, "max_iterations": 100000}}
 //
 // Common fields: scene (walker | giant_swing), task (evaluate | optimise | multistart |
-// continuation | sweep | foot_sweep), name (<= 200 chars), objective (cost_of_transport |
-// torque_squared | energy), solver {solver: ipopt | sqp, max_iterations 1..100000,
+// continuation | sweep | foot_sweep), name (<= 200 chars), objective (f_mech: cost of transport of the positive mechanical work, seed 001 eq. 5.102 |
+// f_usq: squared torques, eq. 5.101), solver {solver: ipopt | sqp, max_iterations 1..100000,
 // optimality_tolerance / constraint_tolerance in [1e-14, 1], print_level 0..12}, limits
 // {max_wall_seconds in (0, 604800], max_iterations 1..1e9}.
 
@@ -43,7 +43,7 @@ ValidatedJobSpec validate_job_spec(const nlohmann::json& spec, const JobKindRegi
 // The spec's "limits", each capped by the server's.
 JobLimits effective_limits(const nlohmann::json& spec, const JobLimits& server_caps);
 
-// The spec's "solver" block on top of SolverOptions defaults.
-nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec);
+// The spec's "solver" block on top of `base` (default: SolverOptions defaults).
+nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec, const nlp::SolverOptions& base = {});
 
 }  // namespace cyclopt::service

@@ -1,0 +1,75 @@
+#include "cyclopt/service/walker_job_spec.hpp"
+
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/walker/model_parameters.hpp"
+#include "cyclopt/walker/virtual_constraints.hpp"
+
+namespace cyclopt::service {
+
+foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
+  if (v.is_string()) try {
+      return foot::foot_preset(v.get<std::string>()).spec;
+    } catch (const SpecError& e) {
+      throw SpecError(path, e.what());
+    }
+  return foot::foot_spec_from_json(object_value(v, path), path);
+}
+
+std::vector<std::string> walker_job_fields(bool sweep) {
+  return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "free_parameters", "start",
+          "multistart"};
+}
+
+WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
+  WalkerJob job;
+  if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
+  job.foot = foot_value(spec["foot"], "foot");
+  const std::string speed_key = sweep ? "speeds" : "speed";
+  if (!spec.contains(speed_key))
+    throw SpecError(speed_key, "is required (m/s, in [" + std::to_string(kMinWalkingSpeed) + ", " +
+                                   std::to_string(kMaxWalkingSpeed) + "])");
+  job.speeds = sweep ? parse_value_range(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)
+                     : std::vector<double>{number_value(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)};
+  job.constants.points = optional_integer(spec, "", "points", 25, 20000).value_or(job.constants.points);
+  job.constants.bezier_degree = optional_integer(spec, "", "bezier_degree", 3, 10).value_or(job.constants.bezier_degree);
+  if (spec.contains("objective"))
+    job.problem.objective = enum_value(spec["objective"], "objective", known_objectives()) == "f_usq"
+                                ? walker::Objective::squared_torque
+                                : walker::Objective::mechanical;
+  if (spec.contains("quadrature"))
+    job.problem.quadrature = enum_value(spec["quadrature"], "quadrature", {"trapezoid", "corrected_trapezoid"}) ==
+                                     "trapezoid"
+                                 ? walker::Quadrature::trapezoid
+                                 : walker::Quadrature::corrected_trapezoid;
+  const walker::WalkerModel<double> model = job.model();
+  if (spec.contains("free_parameters")) {
+    const nlohmann::json& fp = spec["free_parameters"];
+    if (!fp.is_array()) throw SpecError("free_parameters", "must be an array of model parameter names");
+    const std::vector<std::string> names = walker::model_parameter_names(model);
+    for (std::size_t i = 0; i < fp.size(); ++i)
+      job.problem.free_parameters.push_back(enum_value(fp[i], "free_parameters[" + std::to_string(i) + "]", names));
+  }
+  if (spec.contains("start")) {
+    const nlohmann::json& s = spec["start"];
+    const int n = walker::gait_parameter_count(model.joint_count, model.constants.bezier_degree);
+    if (!s.is_array() || static_cast<int>(s.size()) != n)
+      throw SpecError("start", "must be an array of " + std::to_string(n) + " gait parameters (alpha_2 .. alpha_tilde_M, rad)");
+    Eigen::VectorXd x(n);
+    for (int i = 0; i < n; ++i) x(i) = number_value(s[i], "start[" + std::to_string(i) + "]", -20.0, 20.0);
+    job.start = x;
+  }
+  if (spec.contains("multistart")) {
+    const nlohmann::json& m = object_value(spec["multistart"], "multistart");
+    reject_unknown_keys(m, "multistart", {"starts", "seed", "scale"});
+    job.starts = optional_integer(m, "multistart", "starts", 1, 1000).value_or(job.starts);
+    job.seed = static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1));
+    job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
+  }
+  job.solver = solver_options_from_spec(spec, nlp::seed_table_6_2_options());  // the seed's SQP by default
+  return job;
+}
+
+}  // namespace cyclopt::service

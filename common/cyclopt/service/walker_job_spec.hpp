@@ -1,0 +1,57 @@
+#pragma once
+// The walker fields of a job spec (scene "walker"), shared by the walker job kinds and the
+// command line:
+//
+//   {"scene": "walker", "task": "optimise", "foot": "P1-barefoot-left-HM", "speed": 1.3,
+//    "objective": "f_mech", "points": 200, "bezier_degree": 6, "quadrature": "trapezoid",
+//    "free_parameters": ["l_HM"], "start": [30 numbers], "solver": {"solver": "sqp"},
+//    "multistart": {"starts": 20, "seed": 1, "scale": 0.05}}
+//
+// foot: a preset name (cyclopt-foot --list-presets) or a foot spec (foot.schema.json); speed
+// (m/s, [0.1, 3]) for evaluate / optimise / multistart, speeds ("lo:step:hi", a number or an
+// array) for sweep; objective f_mech (5.102, default) or f_usq (5.101); points P in [25, 20000]
+// (eq. 5.93, default 200); bezier_degree M in [3, 10] (default 6); quadrature trapezoid (the
+// seed's) or corrected_trapezoid; free_parameters: model parameters optimised with the gait;
+// start: the gait parameters x (default: the automatic starting gait); multistart: starts
+// [1, 1000], seed [0, 2^31), scale (0, 1] rad of the random perturbation. The solver defaults to
+// the seed's SQP with Table 6.2 (nlp::seed_table_6_2_options()); "solver" overrides it.
+
+#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/nlp/solver_options.hpp"
+#include "cyclopt/walker/gait_problem.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace cyclopt::service {
+
+inline constexpr double kMinWalkingSpeed = 0.1, kMaxWalkingSpeed = 3.0;  // m/s
+
+struct WalkerJob {
+  foot::FootSpec foot;
+  walker::WalkingConstants constants;
+  walker::GaitProblemOptions problem;    // objective, quadrature, free parameters (speed per point)
+  std::vector<double> speeds;            // one for evaluate / optimise / multistart
+  std::optional<Eigen::VectorXd> start;  // gait parameters x
+  nlp::SolverOptions solver;
+  int starts = 20;
+  std::uint64_t seed = 1;
+  double scale = 0.05;
+
+  walker::WalkerModel<double> model() const { return walker::make_walker_model(foot, constants); }
+};
+
+// The spec's "foot": a preset name or a foot spec object; throws SpecError naming "foot...".
+foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path);
+
+// Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed". Throws
+// SpecError naming the first invalid field and its admissible range.
+WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep);
+
+// The walker fields a job kind accepts (for JobKind::fields).
+std::vector<std::string> walker_job_fields(bool sweep);
+
+}  // namespace cyclopt::service
