@@ -106,6 +106,10 @@ int main(int argc, char** argv) {
                 r.optima.size(), r.optima.empty() ? NAN : r.optima.front().objective);
     std::printf("       median per start: %.0f iterations, %.0f evaluations, %.3f s; multistart wall %.2f s\n", median(iterations),
                 median(evaluations), median(seconds), r.wall_seconds);
+    for (size_t i = 0; i < r.runs.size(); ++i)
+      if (!r.runs[i].success())
+        std::printf("       start %zu: %s after %d iterations: %s\n", i, to_string(r.runs[i].termination), r.runs[i].iterations,
+                    r.runs[i].message.c_str());
   }
   if (results.size() < 2) return 0;
   double worst = 0.0;

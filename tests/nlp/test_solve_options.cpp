@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <utility>
+#include <vector>
+
 namespace {
 
 using namespace cyclopt::nlp;
@@ -114,6 +118,48 @@ TEST(TimeLimit, IsReportedAsTimeLimit) {
     o.max_wall_seconds = 1e-9;
     const SolverSummary s = solve(*problem, o, vec({1, 2, 0, 4, 0, 1, 1}));
     EXPECT_EQ(s.termination, Termination::time_limit) << to_string(kind) << ": " << s.message;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Records every evaluation the solver asks the problem for.
+class RecordingProblem : public Problem {
+ public:
+  explicit RecordingProblem(std::unique_ptr<Problem> inner) : inner_(std::move(inner)) {}
+  int num_variables() const override { return inner_->num_variables(); }
+  int num_equalities() const override { return inner_->num_equalities(); }
+  int num_inequalities() const override { return inner_->num_inequalities(); }
+  Eigen::VectorXd lower_bounds() const override { return inner_->lower_bounds(); }
+  Eigen::VectorXd upper_bounds() const override { return inner_->upper_bounds(); }
+  EvaluationStatus evaluate(const Eigen::VectorXd& x, bool with_derivatives, Evaluation& out) override {
+    calls.push_back({x, with_derivatives});
+    return inner_->evaluate(x, with_derivatives, out);
+  }
+  std::vector<std::pair<Eigen::VectorXd, bool>> calls;
+
+ private:
+  std::unique_ptr<Problem> inner_;
+};
+
+TEST(EvaluationCache, EachPointIsEvaluatedOnceExceptToAddDerivatives) {
+  for (SolverKind kind : {SolverKind::ipopt, SolverKind::sqp}) {
+    RecordingProblem problem(hock_schittkowski_problems()[11].make());  // HS71
+    SolverOptions o;
+    o.solver = kind;
+    const SolverSummary s = solve(problem, o, vec({1, 5, 5, 1}));
+    ASSERT_TRUE(s.success()) << to_string(kind);
+    EXPECT_EQ(static_cast<int>(problem.calls.size()), s.function_evaluations + s.jacobian_evaluations);
+    for (size_t k = 1; k < problem.calls.size(); ++k)
+      if (problem.calls[k].first == problem.calls[k - 1].first) {
+        EXPECT_FALSE(problem.calls[k - 1].second) << to_string(kind) << ": same point evaluated twice with derivatives";
+        EXPECT_TRUE(problem.calls[k].second) << to_string(kind) << ": same point evaluated twice without derivatives";
+      }
+    if (kind == SolverKind::ipopt) {
+      EXPECT_EQ(s.function_evaluations, 0);  // the adapter always asks for derivatives: one call per point
+    }
   }
 }
 

@@ -146,14 +146,19 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
   double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
   const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp);
-  if (lp.status != qp::QpStatus::optimal) {
+  // The LP only calibrates the penalty (steps 6/7) and certifies infeasibility (step 5). If it
+  // hits the QP iteration limit (degenerate LPs with many slacks), its last point still bounds the
+  // achievable decrease from below: use that and skip the certificate (a deviation from the seed).
+  const bool lp_solved = lp.status == qp::QpStatus::optimal;
+  if (!lp_solved && lp.status != qp::QpStatus::max_iterations) {
     stop(Termination::numerical_failure, std::string("LP (6.14): ") + qp::to_string(lp.status) + ": " + lp.message);
     return std::nullopt;
   }
+  if (!lp_solved && options_.print_level > 0) std::printf("sqp        LP (6.14) unfinished after %d iterations\n", lp.iterations);
   const VectorXd zero = VectorXd::Zero(n_);
   const double m0 = linearized_violation(current_, zero);
-  const double lp_decrease = m0 - linearized_violation(current_, lp.x.head(n_));
-  if (m0 > 0.0 && lp_decrease <= kStationaryViolationRatio * m0) {  // step 5
+  const double lp_decrease = std::max(0.0, m0 - linearized_violation(current_, lp.x.head(n_)));
+  if (lp_solved && m0 > 0.0 && lp_decrease <= kStationaryViolationRatio * m0) {  // step 5
     stop(Termination::infeasible, "infeasible stationary point of the constraint violation (Algorithm 1, step 5)");
     return std::nullopt;
   }

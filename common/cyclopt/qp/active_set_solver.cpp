@@ -252,6 +252,7 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
   for (int r : working) in_working[static_cast<size_t>(r)] = 1;
   RunOutcome out;
   bool at_subspace_minimum = false;
+  bool degenerate = false;  // the last step had zero length
   for (;; ++out.iterations) {
     if (out.iterations >= max_iterations) return out;
     const Subspace sub = make_subspace(lc, bound_variable, eq_rows, working);
@@ -288,10 +289,17 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
       double largest = 0.0;
       if (y_rows.size()) largest = y_rows.cwiseAbs().maxCoeff();
       if (y_working.size()) largest = std::max(largest, y_working.cwiseAbs().maxCoeff());
-      double most_negative = -options.optimality_tolerance * std::max(1.0, largest);
+      // Drop the most negative multiplier; after a zero-length step (degenerate vertex) drop the
+      // lowest-numbered row with a negative one instead (Bland's rule), which cannot cycle.
+      const double threshold = -options.optimality_tolerance * std::max(1.0, largest);
+      double most_negative = threshold;
       Index worst = -1;
-      for (Index k = 0; k < y_working.size(); ++k)
-        if (y_working[k] < most_negative) most_negative = y_working[k], worst = k;
+      for (Index k = 0; k < y_working.size(); ++k) {
+        if (y_working[k] >= threshold) continue;
+        if (degenerate ? (worst < 0 || working[static_cast<size_t>(k)] < working[static_cast<size_t>(worst)])
+                       : y_working[k] < most_negative)
+          most_negative = y_working[k], worst = k;
+      }
       if (worst < 0) {
         out.status = QpStatus::optimal;
         out.eq_multipliers = VectorXd::Zero(lc.E.rows());
@@ -321,6 +329,7 @@ RunOutcome run_active_set(const MatrixXd& H, const VectorXd& g, const LinearCons
       return out;
     }
     x += alpha * step.p;
+    degenerate = blocking >= 0 && alpha * p_norm <= kStationaryStep * std::max(1.0, x.lpNorm<Eigen::Infinity>());
     at_subspace_minimum = blocking < 0;
     if (blocking >= 0) {
       working.push_back(static_cast<int>(blocking));
