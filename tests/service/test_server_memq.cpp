@@ -1,10 +1,8 @@
 // The server and a client in one process over memq:// (no network): submission, idempotency,
 // progress rate, paged queries, cancellation, limits, rejection of bad messages, and resume
 // after a shutdown in the middle of a sweep.
-#include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt_channels.hpp"
-#include "server.hpp"
-#include "service_client.hpp"
+#include "memq_server_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,30 +21,13 @@ std::string sweep(int points, int delay_ms, int samples = 13) {
   return s.dump();
 }
 
-class ServerMemq : public ::testing::Test {
+class ServerMemq : public testing::MemqServerTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("cyclopt_memq_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    config_.database = (dir_ / "results.db").string();
-    config_.workers = 2;
-    ASSERT_TRUE(lcm_.good());
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   cyclopt_lcm::job_ack_t submit(const std::string& id, const std::string& spec) {
     const auto ack = client_.submit(id, spec, 5.0);
     EXPECT_TRUE(ack);
     return ack.value_or(cyclopt_lcm::job_ack_t{});
   }
-
-  std::filesystem::path dir_;
-  server::ServerConfig config_;
-  service::JobKindRegistry kinds_ = service::builtin_job_kinds();
-  lcm::LCM lcm_{"memq://"};
-  client::ServiceClient client_{lcm_};
 };
 
 TEST_F(ServerMemq, SubmitWatchAndQuery) {

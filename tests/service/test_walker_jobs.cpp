@@ -1,11 +1,9 @@
 // The walker job kinds through the server over memq:// (walker_job_kinds.hpp): evaluate, optimise
 // and sweep store real gaits with their solver summaries and trajectories; bad walker fields are
 // rejected naming the field and its range.
-#include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "server.hpp"
-#include "service_client.hpp"
+#include "memq_server_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,18 +17,8 @@ nlohmann::json walker_spec(const std::string& task) {
           {"solver", {{"max_iterations", 600}}}};
 }
 
-class WalkerJobs : public ::testing::Test {
+class WalkerJobs : public testing::MemqServerTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("cyclopt_walker_jobs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    config_.database = (dir_ / "results.db").string();
-    config_.workers = 2;
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
   // Submits, waits for completion and returns the stored solution rows.
   std::vector<nlohmann::json> run(const std::string& id, const nlohmann::json& spec, int expected_points) {
     server::Server srv(config_, kinds_, lcm_);
@@ -49,12 +37,6 @@ class WalkerJobs : public ::testing::Test {
       for (const nlohmann::json& r : page->rows) rows.push_back(r);
     return rows;
   }
-
-  std::filesystem::path dir_;
-  server::ServerConfig config_;
-  service::JobKindRegistry kinds_ = service::builtin_job_kinds();
-  lcm::LCM lcm_{"memq://"};
-  client::ServiceClient client_{lcm_};
 };
 
 TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <optional>
 #include <set>
 
 namespace cyclopt::walker {
@@ -18,6 +19,19 @@ foot::FootSpec with_sharp_corners(foot::FootSpec s, const std::set<std::string>&
   for (std::size_t i = 0; i < layout.size(); ++i)
     if (layout[i].name.substr(0, 2) == "k_" && !keep.count(std::string(layout[i].name))) s.parameters(int(i)) = 1e-8;
   return s;
+}
+
+// Gait parameters of the template with contact distance d and torso lean, or why it has none.
+std::optional<Eigen::VectorXd> template_gait(const WalkerModel<double>& m, double d, double lean, std::string* why = nullptr) {
+  GaitShape shape;
+  shape.contact_distance = d;
+  shape.torso_lean = lean;
+  try {
+    return gait_parameters(m, shape);
+  } catch (const std::invalid_argument& e) {
+    if (why) *why = e.what();
+    return std::nullopt;
+  }
 }
 
 void expect_real_with_finite_derivatives(const GaitEvaluator& ev, const Eigen::VectorXd& x, double speed) {
@@ -51,16 +65,9 @@ TEST(GaitHardCases, FullyPolygonalFeetAreEitherFiniteOrFlagged) {
     int real = 0, flagged = 0;
     for (double d = 0.25; d < 0.9; d += 0.05)
       for (double lean : {0.0, 0.1, 0.2, 0.3}) {
-        GaitShape shape;
-        shape.contact_distance = d;
-        shape.torso_lean = lean;
-        Eigen::VectorXd x;
-        try {
-          x = gait_parameters(ev.model(), shape);
-        } catch (const std::invalid_argument&) {
-          continue;
-        }
-        const GaitEvaluation e = ev.evaluate_with_derivatives(x, GaitOptions{});
+        const std::optional<Eigen::VectorXd> x = template_gait(ev.model(), d, lean);
+        if (!x) continue;
+        const GaitEvaluation e = ev.evaluate_with_derivatives(*x, GaitOptions{});
         if (e.gait.real) {
           ++real;
           EXPECT_TRUE(testing::all_finite(e.gait));
@@ -137,17 +144,13 @@ TEST(GaitHardCases, DegenerateImpactPosturesAreFlaggedNotNan) {
     const GaitEvaluator ev(testing::reference_model(foot));
     for (double d = 0.05; d <= 1.4; d += 0.05)
       for (double lean : {-0.3, 0.0, 0.3}) {
-        GaitShape s;
-        s.contact_distance = d;
-        s.torso_lean = lean;
-        Eigen::VectorXd x;
-        try {
-          x = gait_parameters(ev.model(), s);
-        } catch (const std::invalid_argument& e) {
-          reasons.insert(std::string("template: ") + e.what());
+        std::string why;
+        const std::optional<Eigen::VectorXd> x = template_gait(ev.model(), d, lean, &why);
+        if (!x) {
+          reasons.insert("template: " + why);
           continue;
         }
-        const PeriodicGait<double> g = ev.evaluate(x, GaitOptions{});
+        const PeriodicGait<double> g = ev.evaluate(*x, GaitOptions{});
         if (g.real) {
           ++real;
           EXPECT_TRUE(testing::all_finite(g)) << foot << " d " << d;

@@ -71,25 +71,14 @@ void run_evaluate(const nlohmann::json& spec, JobContext& ctx) {
   if (ctx.already_stored_points().count({0, 0})) return;
   const double v = job.speeds[0];
   const walker::GaitEvaluator ev(job.model());
-  Eigen::VectorXd x;
-  std::string start = "given";
-  if (job.start) {
-    x = *job.start;
-  } else {
-    walker::StartingGaitOptions so;
-    so.speed = v;
-    const walker::StartingGait sg = walker::starting_gait(ev, so);
-    if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(v) + " m/s: " + sg.message);
-    x = sg.x;
-    start = "automatic starting gait";
-  }
+  const walker::GaitStart start = walker::gait_start(ev, v, job.start);
   walker::GaitOptions go;
   go.objective = job.problem.objective;
   go.speed = v;
   go.quadrature = job.problem.quadrature;
-  storage::SolutionPoint p = point_of(ev.evaluate(x, go), {0, 0}, v);
-  p.values["x"] = std::vector<double>(x.data(), x.data() + x.size());
-  p.values["start"] = start;
+  storage::SolutionPoint p = point_of(ev.evaluate(start.x, go), {0, 0}, v);
+  p.values["x"] = std::vector<double>(start.x.data(), start.x.data() + start.x.size());
+  p.values["start"] = start.origin;
   p.iterations = 1;
   ctx.count_iterations(1);
   ctx.store_point(p);
@@ -114,17 +103,8 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   const double v = job.speeds[0];
   const walker::WalkerModel<double> model = job.model();
   const walker::GaitProblemOptions po = problem_at(job, v);
-  Eigen::VectorXd centre;
-  if (job.start) {
-    centre = *job.start;
-  } else {
-    walker::StartingGaitOptions so;
-    so.speed = v;
-    const walker::StartingGait sg = walker::starting_gait(walker::GaitEvaluator(model), so);
-    if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(v) + " m/s: " + sg.message);
-    centre = sg.x;
-  }
   const walker::GaitEvaluator ev(model);
+  const Eigen::VectorXd centre = walker::gait_start(ev, v, job.start).x;
   const walker::GaitProblem shape(model, po);
   nlp::MultistartOptions mo;
   mo.num_starts = job.starts;

@@ -2,7 +2,6 @@
 
 #include "cyclopt/nlp/solve.hpp"
 
-#include <stdexcept>
 
 namespace cyclopt::walker {
 
@@ -21,20 +20,10 @@ nlohmann::json rows_of(const Eigen::MatrixXd& m) {
 GaitOptimum optimise_gait(const WalkerModel<double>& model, const GaitProblemOptions& options,
                           const nlp::SolverOptions& solver, const std::optional<Eigen::VectorXd>& start) {
   GaitProblem problem(model, options);
-  Eigen::VectorXd x0;
   GaitOptimum out;
-  if (start) {
-    x0 = *start;
-    out.start = "given";
-  } else {
-    StartingGaitOptions so;
-    so.speed = options.speed;
-    const StartingGait sg = starting_gait(GaitEvaluator(model), so);
-    if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(options.speed) + " m/s: " + sg.message);
-    x0 = sg.x;
-    out.start = "automatic starting gait (" + sg.message + ")";
-  }
-  const Eigen::VectorXd z0 = problem.initial_point(x0);
+  const GaitStart start_point = gait_start(GaitEvaluator(model), options.speed, start);
+  out.start = start_point.origin;
+  const Eigen::VectorXd z0 = problem.initial_point(start_point.x);
   nlp::Evaluation e0;
   if (problem.evaluate(z0, false, e0).ok) out.start_objective = e0.objective;
   out.summary = nlp::solve(problem, solver, z0);

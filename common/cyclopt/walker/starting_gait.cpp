@@ -138,6 +138,15 @@ StartingGait starting_gait(const GaitEvaluator& ev, const StartingGaitOptions& o
   return out;
 }
 
+GaitStart gait_start(const GaitEvaluator& ev, double speed, const std::optional<Eigen::VectorXd>& given) {
+  if (given) return {*given, "given"};
+  StartingGaitOptions o;
+  o.speed = speed;
+  const StartingGait sg = starting_gait(ev, o);
+  if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(speed) + " m/s: " + sg.message);
+  return {sg.x, "automatic starting gait (" + sg.message + ")"};
+}
+
 Eigen::VectorXd perturbed_gait(const GaitEvaluator& ev, const Eigen::VectorXd& x, double scale, std::mt19937_64& rng,
                                int max_draws) {
   std::normal_distribution<double> normal(0.0, 1.0);

@@ -14,6 +14,7 @@
 #include "cyclopt/walker/gait_evaluation.hpp"
 #include "cyclopt/walker/gait_shape.hpp"
 
+#include <optional>
 #include <random>
 #include <string>
 
@@ -39,6 +40,14 @@ struct StartingGait {
 };
 
 StartingGait starting_gait(const GaitEvaluator& evaluator, const StartingGaitOptions& options);
+
+// Where a solve starts: the given gait parameters, or the automatic starting gait at `speed`.
+struct GaitStart {
+  Eigen::VectorXd x;
+  std::string origin;  // "given" or the starting gait's message
+};
+// Throws std::runtime_error when there is no given start and no real starting gait.
+GaitStart gait_start(const GaitEvaluator& evaluator, double speed, const std::optional<Eigen::VectorXd>& given);
 
 // A random gait near x for multistart: x + scale * N(0, 1) per entry, redrawn until the periodic
 // solution is real (at most max_draws draws; throws std::runtime_error naming the scale otherwise).
