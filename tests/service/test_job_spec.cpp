@@ -1,6 +1,7 @@
 // Job-spec validation: value ranges, common fields, the foot_sweep kind; every error names its
 // field.
 #include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/service/foot_sweep_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -60,7 +61,9 @@ TEST(JobSpec, ErrorsNameTheField) {
   };
   EXPECT_EQ(field_of(with("/scene", "robot")), "scene");
   EXPECT_EQ(field_of(with("/scene", "giant_swing")), "scene");
-  EXPECT_EQ(field_of(with("/task", "optimise")), "task");  // not available yet
+  JobKindRegistry foot_only;  // a server that implements only foot_sweep
+  foot_only.add(foot_sweep_kind());
+  EXPECT_EQ(failing_field([&] { validate_job_spec(with("/task", "optimise"), foot_only); }), "task");
   EXPECT_EQ(field_of(with("/task", 3)), "task");
   EXPECT_EQ(field_of(with("/colour", "red")), "colour");
   EXPECT_EQ(field_of(with("/limits/max_wall_seconds", -1)), "limits.max_wall_seconds");
