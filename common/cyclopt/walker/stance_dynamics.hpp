@@ -19,17 +19,32 @@ using CoordinateMatrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMa
 // Slot rates u = slot_map * q_dot.
 template <class T>
 SlotVector<T> slot_rates(const WalkerModel<T>& m, const CoordinateVector<T>& q_dot) {
-  return m.slot_map.template cast<T>() * q_dot;
+  return slot_combination(m, q_dot);
+}
+
+// Columns sum_t G_st a_t for every slot s. For scalars carrying derivatives plain loops beat
+// Eigen's general matrix product (packing, dynamic sizes) at these sizes; doubles keep Eigen's.
+template <class T>
+Eigen::Matrix<T, 2, kMaxSlots> gram_weighted(const WalkerModel<T>& m, const Eigen::Matrix<T, 2, kMaxSlots>& a) {
+  Eigen::Matrix<T, 2, kMaxSlots> A;
+  if constexpr (std::is_same_v<T, double>) {
+    A.leftCols(m.slot_count) = a.leftCols(m.slot_count) * m.gram;
+    return A;
+  }
+  for (int s = 0; s < m.slot_count; ++s) {
+    Vec2<T> sum = Vec2<T>::Zero();
+    for (int t = 0; t < m.slot_count; ++t) sum += a.col(t) * m.gram(t, s);
+    A.col(s) = sum;
+  }
+  return A;
 }
 
 // P_s = sum_t G_st u_t w_t: the mass-weighted velocity sums every slot sees.
 template <class T>
 Eigen::Matrix<T, 2, kMaxSlots> slot_momenta(const WalkerModel<T>& m, const StanceFrame<T>& f, const SlotVector<T>& u) {
-  Eigen::Matrix<T, 2, kMaxSlots> wu;
+  Eigen::Matrix<T, 2, kMaxSlots> wu = Eigen::Matrix<T, 2, kMaxSlots>::Zero();
   for (int t = 0; t < m.slot_count; ++t) wu.col(t) = f.w.col(t) * u(t);
-  Eigen::Matrix<T, 2, kMaxSlots> P;
-  P.leftCols(m.slot_count) = wu.leftCols(m.slot_count) * m.gram;
-  return P;
+  return gram_weighted(m, wu);
 }
 
 // Slot forces Q (see header comment) for rates u and slot accelerations u_dot.
@@ -37,10 +52,9 @@ template <class T>
 SlotVector<T> slot_forces(const WalkerModel<T>& m, const StanceFrame<T>& f, const SlotVector<T>& u,
                           const SlotVector<T>& u_dot) {
   const int n = m.slot_count;
-  Eigen::Matrix<T, 2, kMaxSlots> a;
+  Eigen::Matrix<T, 2, kMaxSlots> a = Eigen::Matrix<T, 2, kMaxSlots>::Zero();
   for (int t = 0; t < n; ++t) a.col(t) = f.w.col(t) * u_dot(t) + f.dw.col(t) * (u(t) * u(t));
-  Eigen::Matrix<T, 2, kMaxSlots> A;
-  A.leftCols(n) = a.leftCols(n) * m.gram;
+  const Eigen::Matrix<T, 2, kMaxSlots> A = gram_weighted(m, a);
   SlotVector<T> Q(n);
   const T g = T(m.constants.gravity);
   for (int s = 0; s < n; ++s) Q(s) = ad::dot(f.w.col(s), A.col(s)) + m.inertia(s) * u_dot(s) + g * m.first_moment(s) * f.w(1, s);
@@ -52,8 +66,7 @@ SlotVector<T> slot_forces(const WalkerModel<T>& m, const StanceFrame<T>& f, cons
 template <class T>
 CoordinateVector<T> generalized_forces(const WalkerModel<T>& m, const StanceFrame<T>& f, const CoordinateVector<T>& q_dot,
                                        const CoordinateVector<T>& q_ddot) {
-  const SlotVector<T> Q = slot_forces(m, f, slot_rates(m, q_dot), slot_rates(m, q_ddot));
-  return m.slot_map.template cast<T>().transpose() * Q;
+  return coordinate_combination(m, slot_forces(m, f, slot_rates(m, q_dot), slot_rates(m, q_ddot)));
 }
 
 // Mass matrix M_s(q) = slot_map^T D slot_map, D_st = G_st (w_s . w_t) + delta_st J_s (eq. 5.16).
@@ -112,10 +125,9 @@ ZeroDynamicsCoefficients<T> zero_dynamics_coefficients(const WalkerModel<T>& m, 
   const SlotVector<T> u = slot_rates(m, gamma);          // slot rates per unit theta_dot
   const SlotVector<T> u2 = slot_rates(m, gamma_prime);   // slot accelerations per theta_dot^2
   const Eigen::Matrix<T, 2, kMaxSlots> P = slot_momenta(m, f, u);
-  Eigen::Matrix<T, 2, kMaxSlots> a2;
+  Eigen::Matrix<T, 2, kMaxSlots> a2 = Eigen::Matrix<T, 2, kMaxSlots>::Zero();
   for (int t = 0; t < n; ++t) a2.col(t) = f.w.col(t) * u2(t) + f.dw.col(t) * (u(t) * u(t));
-  Eigen::Matrix<T, 2, kMaxSlots> A2;
-  A2.leftCols(n) = a2.leftCols(n) * m.gram;
+  const Eigen::Matrix<T, 2, kMaxSlots> A2 = gram_weighted(m, a2);
   ZeroDynamicsCoefficients<T> z{};
   T a = T(0.0), b = T(0.0), c = T(0.0), dT = T(0.0);
   const T g = T(m.constants.gravity);

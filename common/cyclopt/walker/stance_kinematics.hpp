@@ -11,6 +11,7 @@
 #include "cyclopt/foot/rolling_kinematics.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 namespace cyclopt::walker {
 
@@ -40,11 +41,41 @@ foot::RollingContact<T> foot_contact(const WalkerModel<T>& m, const T& theta_F) 
   return foot::rolling_contact(m.foot, T(theta_F - m.foot_zero_angle));
 }
 
+// slot_map * v for any coordinate-shaped v. slot_map holds a few entries 0, +-1, +-1/2: for
+// scalars carrying derivatives, scalar multiples of the nonzero ones avoid the casts and full
+// products of a dense product with slot_map cast to T; doubles keep Eigen's vectorised product.
+template <class T>
+SlotVector<T> slot_combination(const WalkerModel<T>& m, const CoordinateVector<T>& v) {
+  if constexpr (std::is_same_v<T, double>) return m.slot_map * v;
+  SlotVector<T> r(m.slot_count);
+  for (int s = 0; s < m.slot_count; ++s) {
+    T sum = T(0.0);
+    for (int k = 0; k < v.size(); ++k)
+      if (m.slot_map(s, k) != 0.0) sum += m.slot_map(s, k) * v(k);
+    r(s) = sum;
+  }
+  return r;
+}
+
+// slot_map^T * Q: slot forces to generalised forces (same scheme).
+template <class T>
+CoordinateVector<T> coordinate_combination(const WalkerModel<T>& m, const SlotVector<T>& Q) {
+  if constexpr (std::is_same_v<T, double>) return m.slot_map.transpose() * Q;
+  CoordinateVector<T> r(m.slot_map.cols());
+  for (int k = 0; k < r.size(); ++k) {
+    T sum = T(0.0);
+    for (int s = 0; s < m.slot_count; ++s)
+      if (m.slot_map(s, k) != 0.0) sum += m.slot_map(s, k) * Q(s);
+    r(k) = sum;
+  }
+  return r;
+}
+
 template <class T>
 StanceFrame<T> stance_frame(const WalkerModel<T>& m, const CoordinateVector<T>& q) {
   using std::cos, std::sin;
   StanceFrame<T> f;
-  f.angle = m.slot_map.template cast<T>() * q;
+  f.angle = slot_combination(m, q);
   for (int s = 0; s < m.segment_count; ++s) {
     const T c = cos(f.angle(s)), sn = sin(f.angle(s));
     f.w.col(s) << c, -sn;
