@@ -1,5 +1,7 @@
-// The QPSQP continuation (seed 001, Algorithm 2) on the point-foot walker over the mean speed.
+// The QPSQP continuation (seed 001, Algorithm 2) on the point-foot walker over the mean speed,
+// and the sensitivity study of section 10.1 over a model parameter.
 #include "cyclopt/continuation/continuation_solver.hpp"
+#include "cyclopt/continuation/sensitivity.hpp"
 #include "cyclopt/continuation/walker_family.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
@@ -52,4 +54,22 @@ TEST(WalkerContinuation, BackAndForthReturnsToTheSameOptimum) {
   EXPECT_NEAR(back.objective, up.points.front().objective, 1e-6 * std::abs(up.points.front().objective));
   EXPECT_LT((back.x - up.points.front().x).lpNorm<Eigen::Infinity>(), 1e-3);
   for (const CurvePoint& p : up.points) EXPECT_TRUE(p.converged);
+}
+
+TEST(WalkerContinuation, SensitivityFollowsTheOptimumOverAModelParameter) {
+  const PointFeet& pf = point_feet();
+  ASSERT_TRUE(pf.start.summary.success());
+  SensitivityOptions o;
+  o.parameters = {"m_T"};  // torso mass
+  o.relative_range = 0.04;
+  o.steps = 1;
+  const std::vector<SensitivityCurve> s = sensitivity(pf.model, pf.problem, pf.start.z, o);
+  ASSERT_EQ(s.size(), 1u);
+  for (const SensitivityPoint& p : s[0].points)
+    std::printf("m_T %+.3f: delta f %+.6f (curve %d)\n", p.relative_change, p.delta_objective, p.curve_id);
+  ASSERT_EQ(s[0].points.size(), 3u) << s[0].message;
+  EXPECT_EQ(s[0].jumps, 0);
+  EXPECT_DOUBLE_EQ(s[0].points[1].relative_change, 0.0);
+  EXPECT_NEAR(s[0].points[1].delta_objective, 0.0, 1e-12);
+  for (const SensitivityPoint& p : s[0].points) EXPECT_EQ(p.curve_id, 0);
 }
