@@ -108,11 +108,11 @@ ContinuationResult Run::run(const VectorXd& x0) {
     CurvePoint point;
     VectorXd x_start = x_k;
     std::optional<MatrixXd> W;
-    double p_new = 0.0, next_trust = trust_;
+    double p_new = 0.0, step = 0.0, next_trust = trust_;  // step = |Delta p| exactly (p_new - p may round)
     if (o_.predictor == Predictor::qp) {
       for (;;) {  // steps 2-18
         ++point.predictor_attempts;
-        const double step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
+        step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
         p_new = step == remaining ? target : p + direction * step;
         const QpPredictorResult pr = qp_predictor(*family_.at(p_new), x_k, settings_);
         point.predictor_steps += pr.steps;
@@ -128,10 +128,10 @@ ContinuationResult Run::run(const VectorXd& x0) {
         trust_ = std::max(o_.min_trust_region, factor * trust_);
       }
     } else {
-      const double step = std::min(trivial_step > 0.0 ? trivial_step : o_.fixed_step > 0.0 ? o_.fixed_step : remaining, remaining);
+      step = std::min(trivial_step > 0.0 ? trivial_step : o_.fixed_step > 0.0 ? o_.fixed_step : remaining, remaining);
       p_new = step == remaining ? target : p + direction * step;
     }
-    point.trust_region = o_.predictor == Predictor::qp ? trust_ : std::abs(p_new - p);
+    point.trust_region = o_.predictor == Predictor::qp ? trust_ : step;
     point.parameter = p_new;
     point.on_grid = on_grid(p_new);
     point.corrector = correct(p_new, x_start, W);
@@ -150,14 +150,14 @@ ContinuationResult Run::run(const VectorXd& x0) {
         result_.message = "stopped";
         break;
       }
-      if (std::abs(delta_p) <= o_.min_trust_region) {
+      if (step <= o_.min_trust_region) {
         result_.message = "corrector failed at the minimal step at p = " + std::to_string(p_new);
         break;
       }
       if (o_.predictor == Predictor::qp)
-        trust_ = std::max(o_.min_trust_region, o_.tau * o_.tau * std::abs(delta_p));
+        trust_ = std::max(o_.min_trust_region, o_.tau * o_.tau * step);
       else
-        trivial_step = std::max(o_.min_trust_region, 0.5 * std::abs(delta_p));
+        trivial_step = std::max(o_.min_trust_region, 0.5 * step);
       continue;
     }
     const JumpTest jt = test_jump(x_k, point.x, delta_p, secant, o_);
