@@ -3,7 +3,7 @@
 // corrector), (b) Ipopt warm starts at every 0.1 m/s (trivial predictor), (c) the trivial
 // predictor with the fixed step 0.2 m/s and the SQP corrector. Printed per method: corrector
 // iterations, QP-predictor steps, wall time, curve jumps, and per point the speed, curve id and
-// f_mech. The seed starts from its second-best optimum x_2*; here the start is the SQP optimum
+// f_mech (progress per point on stderr). The seed starts from its second-best optimum x_2*; here the start is the SQP optimum
 // from the automatic starting gait.
 //
 // usage: continuation_bench [foot = P1-barefoot-left-HM] [from = 1.3] [to = 2.3] [methods = qpsqp,ipopt,fixed]
@@ -64,7 +64,11 @@ int main(int argc, char** argv) {
     o.fixed_step = m.fixed_step;
     o.corrector = sqp;
     o.corrector.solver = m.corrector;
-    results.push_back(continue_solution(family, start.z, grid, o));
+    results.push_back(continue_solution(family, start.z, grid, o, {}, [&m](const CurvePoint& p) {
+      std::fprintf(stderr, "  [%s] v %.4f curve %d %s f %.6f, %d corrector iterations, %.1f s\n", m.key, p.parameter, p.curve_id,
+                   p.converged ? "ok" : "failed", p.objective, p.corrector.iterations, p.seconds);
+      return true;
+    }));
     const ContinuationResult& r = results.back();
     std::printf("%-28s %8zu %10d %10d %9.1f %7zu %10.6f %s (%s)\n", m.name, r.points.size(), r.corrector_iterations,
                 r.predictor_steps, r.seconds, r.jumps.size(), r.points.back().objective, r.finished ? "yes" : "no",
