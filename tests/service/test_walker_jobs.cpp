@@ -1,5 +1,5 @@
-// The walker job kinds through the server over memq:// (walker_job_kinds.hpp): evaluate, optimise
-// and sweep store real gaits with their solver summaries and trajectories; bad walker fields are
+// The walker job kinds through the server over memq:// (walker_job_kinds.hpp,
+// walker_continuation_kinds.hpp): evaluate, optimise, continuation and sweep store real gaits with their solver summaries and trajectories; bad walker fields are
 // rejected naming the field and its range.
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
@@ -19,7 +19,7 @@ nlohmann::json walker_spec(const std::string& task) {
 
 class WalkerJobs : public testing::MemqServerTest {
  protected:
-  // Submits, waits for completion and returns the stored solution rows.
+  // Submits, waits for completion and returns the stored solution rows (expected_points < 0: any).
   std::vector<nlohmann::json> run(const std::string& id, const nlohmann::json& spec, int expected_points) {
     server::Server srv(config_, kinds_, lcm_);
     const auto ack = client_.submit(id, spec.dump(), 5.0);
@@ -29,7 +29,9 @@ class WalkerJobs : public testing::MemqServerTest {
     EXPECT_TRUE(done);
     if (!done) return {};
     EXPECT_EQ(done->state, "done") << done->error;
-    EXPECT_EQ(done->points_stored, expected_points);
+    if (expected_points >= 0) {
+      EXPECT_EQ(done->points_stored, expected_points);
+    }
     const auto page = client_.query(storage::query_for("solutions", ack->job_id), 5.0);
     EXPECT_TRUE(page);
     std::vector<nlohmann::json> rows;
@@ -61,21 +63,46 @@ TEST_F(WalkerJobs, OptimiseLowersTheCostOfTransport) {
   EXPECT_TRUE(values["solver"]["success"].get<bool>());
 }
 
-TEST_F(WalkerJobs, SweepStoresOnePointPerSpeed) {
-  nlohmann::json spec = walker_spec("sweep");
+TEST_F(WalkerJobs, ContinuationStoresEveryPointWithItsCurve) {
+  nlohmann::json spec = walker_spec("continuation");
   spec.erase("speed");
-  spec["speeds"] = "0.8:0.2:1.2";
-  const auto rows = run("sweep-1", spec, 3);
-  ASSERT_EQ(rows.size(), 3u);
+  spec["speeds"] = "1.0:0.1:1.2";
+  const auto rows = run("cont-1", spec, -1);
+  ASSERT_GE(rows.size(), 3u);
+  int on_grid = 0;
   for (const auto& r : rows) {
     const nlohmann::json values = r["values"];
-    std::printf("sweep v = %.1f: f_mech %.5f, %s after %d iterations (%s)\n", r["parameter"].get<double>(),
-                values["gait"]["objective"].get<double>(), values["solver"]["termination"].get<std::string>().c_str(),
-                values["solver"]["iterations"].get<int>(), values["start"].get<std::string>().substr(0, 40).c_str());
+    std::printf("continuation v = %.3f: curve %d, f_mech %.5f, %s, %d iterations, predictor %d/%d\n",
+                r["parameter"].get<double>(), values["curve_id"].get<int>(), values["gait"]["objective"].get<double>(),
+                values["solver"]["termination"].get<std::string>().c_str(), values["solver"]["iterations"].get<int>(),
+                values["predictor_attempts"].get<int>(), values["predictor_steps"].get<int>());
+    EXPECT_EQ(r["curve"].get<int>(), values["curve_id"].get<int>());
     EXPECT_TRUE(values["gait"]["real"].get<bool>());
-    EXPECT_TRUE(values["solver"]["success"].get<bool>());
+    EXPECT_NEAR(values["gait"]["mean_speed"].get<double>(), r["parameter"].get<double>(), 1e-8);
+    on_grid += values["on_grid"].get<bool>();
+  }
+  EXPECT_EQ(on_grid, 3);
+}
+
+TEST_F(WalkerJobs, SweepSelectsTheBestPointPerSpeed) {
+  nlohmann::json spec = walker_spec("sweep");
+  spec.erase("speed");
+  spec["speeds"] = "0.9:0.1:1.1";
+  spec["multistart"] = {{"starts", 2}, {"seed", 3}, {"scale", 0.02}};
+  spec["continuation"] = {{"seed_speeds", 1.0}};
+  const auto rows = run("sweep-1", spec, -1);
+  int best = 0;
+  for (const auto& r : rows) {
+    if (r["curve"].get<int>() != 0) continue;
+    ++best;
+    const nlohmann::json values = r["values"];
+    std::printf("sweep best v = %.1f: curve %d, f_mech %.5f (%s)\n", r["parameter"].get<double>(),
+                values["curve_id"].get<int>(), values["gait"]["objective"].get<double>(),
+                values["solver"]["termination"].get<std::string>().c_str());
+    EXPECT_TRUE(values["gait"]["real"].get<bool>());
     EXPECT_NEAR(values["gait"]["mean_speed"].get<double>(), r["parameter"].get<double>(), 1e-8);
   }
+  EXPECT_EQ(best, 3);
 }
 
 TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {

@@ -1,6 +1,7 @@
 #include "cyclopt/service/builtin_job_kinds.hpp"
 
 #include "cyclopt/service/foot_sweep_kind.hpp"
+#include "cyclopt/service/walker_continuation_kinds.hpp"
 #include "cyclopt/service/walker_job_kinds.hpp"
 
 namespace cyclopt::service {
@@ -11,6 +12,7 @@ JobKindRegistry builtin_job_kinds() {
   registry.add(walker_evaluate_kind());
   registry.add(walker_optimise_kind());
   registry.add(walker_multistart_kind());
+  registry.add(walker_continuation_kind());
   registry.add(walker_sweep_kind());
   return registry;
 }

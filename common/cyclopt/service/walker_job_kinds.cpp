@@ -2,6 +2,7 @@
 
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 
 #include <cmath>
@@ -16,34 +17,6 @@ walker::GaitProblemOptions problem_at(const WalkerJob& job, double speed) {
   walker::GaitProblemOptions o = job.problem;
   o.speed = speed;
   return o;
-}
-
-storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, storage::PointKey key, double speed) {
-  storage::SolutionPoint p;
-  p.key = key;
-  p.parameter = speed;
-  nlohmann::json g = walker::gait_to_json(gait, true);
-  if (g.contains("trajectory")) {
-    p.trajectory = g["trajectory"];
-    g.erase("trajectory");
-  }
-  p.values["gait"] = g;
-  if (gait.real) {
-    p.objective = gait.objective;
-    p.constraint_violation = std::max({0.0, std::abs(gait.speed_equality), gait.inequalities.maxCoeff()});
-  }
-  p.status = gait.real ? "ok" : "no real solution";
-  return p;
-}
-
-storage::SolutionPoint point_of(const GaitOptimum& opt, storage::PointKey key, double speed) {
-  storage::SolutionPoint p = point_of(opt.gait, key, speed);
-  p.iterations = opt.summary.iterations;
-  p.status = nlp::to_string(opt.summary.termination);
-  p.values["solver"] = walker::summary_to_json(opt.summary);
-  p.values["start"] = opt.start;
-  p.values["start_objective"] = opt.start_objective;
-  return p;
 }
 
 // Solver options whose iteration callback reports progress and honours stop requests.
@@ -138,46 +111,14 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   }
 }
 
-void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
-  const WalkerJob job = parse_walker_job(spec, true);
-  const int n = static_cast<int>(job.speeds.size());
-  ctx.announce(n);
-  ctx.add_curve(0, "optimal gaits over speed", "speed");
-  const std::set<storage::PointKey> done = ctx.already_stored_points();
-  const walker::WalkerModel<double> model = job.model();
-  std::optional<Eigen::VectorXd> warm = job.start;
-  int stored = static_cast<int>(done.size());
-  for (int i = 0; i < n; ++i) {
-    if (done.count({0, i})) {
-      warm.reset();  // a resumed sweep restarts the warm-start chain from the automatic start
-      continue;
-    }
-    if (ctx.stop_reason() != StopReason::none) return;
-    const double v = job.speeds[i];
-    GaitOptimum opt = walker::optimise_gait(model, problem_at(job, v), reporting(job, ctx, v, stored, n), warm);
-    if (!opt.summary.success() && warm && ctx.stop_reason() == StopReason::none) {
-      GaitOptimum cold = walker::optimise_gait(model, problem_at(job, v), reporting(job, ctx, v, stored, n));
-      if (cold.summary.success() || !opt.gait.real) opt = std::move(cold);
-    }
-    if (ctx.stop_reason() != StopReason::none) return;
-    storage::SolutionPoint p = point_of(opt, {0, i}, v);
-    p.values["x"] = std::vector<double>(opt.z.data(), opt.z.data() + opt.z.size());
-    if (ctx.store_point(p)) ++stored;
-    if (opt.summary.success()) warm = opt.z.head(opt.z.size() - static_cast<int>(job.problem.free_parameters.size()));
-    else warm.reset();
-  }
-}
-
-JobKind walker_kind(const std::string& task, bool sweep, void (*run)(const nlohmann::json&, JobContext&)) {
-  return {task, {"walker"}, walker_job_fields(sweep),
-          [sweep](const nlohmann::json& spec) { parse_walker_job(spec, sweep); }, run};
+JobKind walker_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
+  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run};
 }
 
 }  // namespace
 
-JobKind walker_evaluate_kind() { return walker_kind("evaluate", false, run_evaluate); }
-JobKind walker_optimise_kind() { return walker_kind("optimise", false, run_optimise); }
-JobKind walker_multistart_kind() { return walker_kind("multistart", false, run_multistart); }
-JobKind walker_sweep_kind() { return walker_kind("sweep", true, run_sweep); }
+JobKind walker_evaluate_kind() { return walker_kind("evaluate", run_evaluate); }
+JobKind walker_optimise_kind() { return walker_kind("optimise", run_optimise); }
+JobKind walker_multistart_kind() { return walker_kind("multistart", run_multistart); }
 
 }  // namespace cyclopt::service

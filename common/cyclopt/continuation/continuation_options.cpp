@@ -1,0 +1,38 @@
+#include "cyclopt/continuation/continuation_options.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace cyclopt::continuation {
+
+const char* to_string(Predictor p) { return p == Predictor::qp ? "qp" : "trivial"; }
+
+Predictor parse_predictor(const std::string& text, const std::string& field) {
+  if (text == "qp") return Predictor::qp;
+  if (text == "trivial") return Predictor::trivial;
+  throw std::invalid_argument(field + ": must be \"qp\" or \"trivial\", got \"" + text + "\"");
+}
+
+namespace {
+
+void require(bool ok, const char* field, const char* range) {
+  if (!ok) throw std::invalid_argument(std::string(field) + ": must be " + range);
+}
+
+}  // namespace
+
+void validate(const ContinuationOptions& o) {
+  require(o.eta > 0.0 && o.eta < 1.0, "eta", "in (0, 1)");
+  require(o.tau > 0.0 && o.tau < 1.0, "tau", "in (0, 1)");
+  require(o.initial_trust_region >= 0.0, "initial_trust_region", ">= 0");
+  require(o.min_trust_region > 0.0, "min_trust_region", "> 0");
+  require(o.max_trust_region >= 0.0, "max_trust_region", ">= 0");
+  require(o.fixed_step >= 0.0, "fixed_step", ">= 0");
+  require(o.active_tolerance >= 0.0, "active_tolerance", ">= 0");
+  require(o.jump_slope_factor > 1.0, "jump_slope_factor", "> 1");
+  require(o.jump_min_distance >= 0.0, "jump_min_distance", ">= 0");
+  require(o.jump_first_distance >= o.jump_min_distance, "jump_first_distance", ">= jump_min_distance");
+  nlp::validate(o.corrector);
+}
+
+}  // namespace cyclopt::continuation

@@ -1,0 +1,47 @@
+#pragma once
+// Parameters of the continuation (seed 001, Algorithm 2; defaults Table 7.1) and of the simpler
+// comparison methods of section 8.2 (trivial predictor: the last solution is the start of the
+// next solve, with a fixed parameter step or stepping to each requested value).
+#include "cyclopt/nlp/solver_options.hpp"
+
+namespace cyclopt::continuation {
+
+enum class Predictor {
+  qp,       // the QP predictor of Algorithm 2 (two SQP steps, kappa (7.2), trust region)
+  trivial,  // x_{k+1,0} = x_k (warm start), no step control
+};
+const char* to_string(Predictor p);
+// "qp" or "trivial"; anything else throws std::invalid_argument naming `field`.
+Predictor parse_predictor(const std::string& text, const std::string& field = "predictor");
+
+struct ContinuationOptions {
+  Predictor predictor = Predictor::qp;
+  // Table 7.1. Delta_1 = |p_2 - p_1| and Delta_max = max |p_{k+1} - p_k| when left at 0.
+  double eta = 1e-4;                   // eta of the merit test (6.19); in (0, 1)
+  double tau = 0.8;                    // trust-region factor; in (0, 1)
+  double initial_trust_region = 0.0;   // Delta_1; >= 0 (0: grid spacing)
+  double min_trust_region = 0.002;     // Delta_min; > 0
+  double max_trust_region = 0.0;       // Delta_max; >= 0 (0: largest grid spacing)
+  // Trivial predictor: parameter step |Delta p| (e.g. 0.2 m/s as in Fig. 8.4) towards the last
+  // requested value; 0 steps to each requested value in turn.
+  double fixed_step = 0.0;
+  // Inequalities with c_u >= -active_tolerance at x_k are active for the multipliers (6.26) of
+  // the predictor's Hessians (6.24).
+  double active_tolerance = 1e-6;
+  // Jump to another solution curve (section 8.2: the followed optimum stops existing and the
+  // corrector converges elsewhere): the secant |x_{k+1} - x_k|_2 / |Delta p| exceeds
+  // jump_slope_factor times that of the previous step on the same curve, and the relative
+  // distance |x_{k+1} - x_k|_2 / max(1, |x_k|_2) exceeds jump_min_distance. On the first step of
+  // a curve (no previous secant) the relative distance alone decides, against jump_first_distance.
+  double jump_slope_factor = 4.0;      // > 1
+  double jump_min_distance = 0.02;     // >= 0
+  double jump_first_distance = 0.2;    // >= jump_min_distance
+  // The corrector (SQP of Algorithm 1 or Ipopt). With the SQP and the QP predictor its initial
+  // Hessian is the predictor's W_{k+1,0} (Algorithm 2, step 19).
+  nlp::SolverOptions corrector = nlp::seed_table_6_2_options();
+};
+
+// Throws std::invalid_argument naming the first field outside its admissible range.
+void validate(const ContinuationOptions& options);
+
+}  // namespace cyclopt::continuation

@@ -1,0 +1,203 @@
+#include "cyclopt/continuation/continuation_solver.hpp"
+
+#include "cyclopt/continuation/curve_jump.hpp"
+#include "cyclopt/continuation/qp_predictor.hpp"
+#include "cyclopt/nlp/solve.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+namespace cyclopt::continuation {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void check_parameters(const std::vector<double>& p) {
+  if (p.size() < 2) throw std::invalid_argument("parameters: need p_0 and at least one further value");
+  const double direction = p[1] - p[0];
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (!((p[i] - p[i - 1]) * direction > 0.0))
+      throw std::invalid_argument("parameters: must be strictly monotone (value " + std::to_string(i) + ")");
+}
+
+class Run {
+ public:
+  Run(const ParametricProblem& family, const std::vector<double>& grid, const ContinuationOptions& o,
+      const CurveStart& start, const PointCallback& on_point)
+      : family_(family), grid_(grid), o_(o), on_point_(on_point), curve_(start.curve_id), next_curve_(start.next_curve_id) {
+    double max_spacing = 0.0;
+    for (std::size_t i = 1; i < grid.size(); ++i) max_spacing = std::max(max_spacing, std::abs(grid[i] - grid[i - 1]));
+    // Table 7.1: Delta_1 = |p_2 - p_1|, Delta_max = max |p_{k+1} - p_k|.
+    max_trust_ = o.max_trust_region > 0.0 ? o.max_trust_region : max_spacing;
+    trust_ = std::clamp(o.initial_trust_region > 0.0 ? o.initial_trust_region : std::abs(grid[1] - grid[0]),
+                        o.min_trust_region, std::max(o.min_trust_region, max_trust_));
+    settings_.eta = o.eta;
+    settings_.active_tolerance = o.active_tolerance;
+    settings_.constraint_tolerance = o.corrector.constraint_tolerance;
+    settings_.relative_min_penalty = o.corrector.sqp.relative_min_penalty;
+    settings_.qp = o.corrector.sqp.qp;
+  }
+
+  ContinuationResult run(const VectorXd& x0);
+
+ private:
+  nlp::SolverSummary correct(double p, const VectorXd& x_start, const std::optional<MatrixXd>& W) const {
+    nlp::SolverOptions so = o_.corrector;
+    if (W && so.solver == nlp::SolverKind::sqp)  // step 19: W_{k+1,0} as the SQP's initial Hessian
+      so.sqp.lagrangian_hessian = [W](const VectorXd&, const VectorXd&, const VectorXd&) { return *W; };
+    return nlp::solve(*family_.at(p), so, x_start);
+  }
+  bool on_grid(double p) const {
+    return std::any_of(grid_.begin() + 1, grid_.end(), [p](double g) { return std::abs(p - g) <= 1e-12 * std::max(1.0, std::abs(g)); });
+  }
+  bool emit(CurvePoint point) {
+    result_.corrector_iterations += point.corrector.iterations;
+    result_.predictor_steps += point.predictor_steps;
+    result_.points.push_back(std::move(point));
+    return !on_point_ || on_point_(result_.points.back());
+  }
+
+  const ParametricProblem& family_;
+  const std::vector<double>& grid_;
+  const ContinuationOptions& o_;
+  const PointCallback& on_point_;
+  QpPredictorSettings settings_;
+  ContinuationResult result_;
+  int curve_, next_curve_;
+  double trust_ = 0.0, max_trust_ = 0.0;
+};
+
+ContinuationResult Run::run(const VectorXd& x0) {
+  const Clock::time_point start = Clock::now();
+  // Step 1: the first point.
+  CurvePoint first;
+  first.parameter = grid_[0];
+  first.curve_id = curve_;
+  first.on_grid = true;
+  first.corrector = correct(grid_[0], x0, std::nullopt);
+  first.converged = first.corrector.success();
+  first.x = first.corrector.x;
+  first.objective = first.corrector.objective;
+  first.seconds = seconds_since(start);
+  VectorXd x_k = first.x;
+  double f_k = first.objective;
+  const bool first_ok = first.converged;
+  if (!emit(std::move(first)) || !first_ok) {
+    result_.message = first_ok ? "stopped" : "no KKT point at the first parameter value";
+    result_.next_curve_id = next_curve_;
+    result_.seconds = seconds_since(start);
+    return std::move(result_);
+  }
+  double p = grid_[0];
+  std::size_t l = 1;
+  std::optional<double> secant;  // of the last step on the current curve
+  double trivial_step = 0.0;     // > 0: shortened after a failed corrector
+  const bool to_each_value = o_.predictor == Predictor::qp || o_.fixed_step == 0.0;
+  for (;;) {
+    const Clock::time_point t0 = Clock::now();
+    const double target = to_each_value ? grid_[l] : grid_.back();
+    const double remaining = std::abs(target - p), direction = target > p ? 1.0 : -1.0;
+    CurvePoint point;
+    VectorXd x_start = x_k;
+    std::optional<MatrixXd> W;
+    double p_new = 0.0, step = 0.0, next_trust = trust_;  // step = |Delta p| exactly (p_new - p may round)
+    if (o_.predictor == Predictor::qp) {
+      for (;;) {  // steps 2-18
+        ++point.predictor_attempts;
+        step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
+        p_new = step == remaining ? target : p + direction * step;
+        const QpPredictorResult pr = qp_predictor(*family_.at(p_new), x_k, settings_);
+        point.predictor_steps += pr.steps;
+        const bool accepted = pr.outcome == PredictorOutcome::both_steps && pr.kappa < 1.0;
+        if (accepted || step <= o_.min_trust_region) {
+          x_start = pr.x;
+          W = pr.W;
+          point.kappa = pr.kappa;
+          next_trust = accepted ? std::min(max_trust_, trust_ / o_.tau) : trust_;
+          break;
+        }
+        const double factor = pr.outcome == PredictorOutcome::no_step ? o_.tau * o_.tau : o_.tau;
+        trust_ = std::max(o_.min_trust_region, factor * trust_);
+      }
+    } else {
+      step = std::min(trivial_step > 0.0 ? trivial_step : o_.fixed_step > 0.0 ? o_.fixed_step : remaining, remaining);
+      p_new = step == remaining ? target : p + direction * step;
+    }
+    point.trust_region = o_.predictor == Predictor::qp ? trust_ : step;
+    point.parameter = p_new;
+    point.on_grid = on_grid(p_new);
+    point.corrector = correct(p_new, x_start, W);
+    point.converged = point.corrector.success();
+    point.x = point.corrector.x;
+    point.objective = point.corrector.objective;
+    point.seconds = seconds_since(t0);
+    if (point.corrector.termination == nlp::Termination::user_stop) {
+      result_.message = "stopped";
+      break;
+    }
+    const double delta_p = p_new - p;
+    if (!point.converged) {
+      point.curve_id = curve_;
+      if (!emit(std::move(point))) {
+        result_.message = "stopped";
+        break;
+      }
+      if (step <= o_.min_trust_region) {
+        result_.message = "corrector failed at the minimal step at p = " + std::to_string(p_new);
+        break;
+      }
+      if (o_.predictor == Predictor::qp)
+        trust_ = std::max(o_.min_trust_region, o_.tau * o_.tau * step);
+      else
+        trivial_step = std::max(o_.min_trust_region, 0.5 * step);
+      continue;
+    }
+    const JumpTest jt = test_jump(x_k, point.x, delta_p, secant, o_);
+    if (jt.jump) {
+      result_.jumps.push_back({curve_, next_curve_, p, p_new, f_k, point.objective, jt.relative_distance});
+      curve_ = next_curve_++;
+      secant.reset();
+    } else {
+      secant = jt.secant;
+    }
+    point.curve_id = curve_;
+    x_k = point.x;
+    f_k = point.objective;
+    p = p_new;
+    trust_ = next_trust;
+    trivial_step = 0.0;
+    const bool go_on = emit(std::move(point));
+    if (p == grid_.back()) {
+      result_.finished = true;
+      result_.message = "reached the last parameter value";
+      break;
+    }
+    if (!go_on) {
+      result_.message = "stopped";
+      break;
+    }
+    if (to_each_value && p == target) ++l;
+  }
+  result_.next_curve_id = next_curve_;
+  result_.seconds = seconds_since(start);
+  return std::move(result_);
+}
+
+}  // namespace
+
+ContinuationResult continue_solution(const ParametricProblem& family, const VectorXd& x0, const std::vector<double>& parameters,
+                                     const ContinuationOptions& options, const CurveStart& start, const PointCallback& on_point) {
+  validate(options);
+  check_parameters(parameters);
+  return Run(family, parameters, options, start, on_point).run(x0);
+}
+
+}  // namespace cyclopt::continuation

@@ -1,0 +1,45 @@
+#pragma once
+// What a continuation returns: the points it solved, each tagged with the id of the solution
+// curve it lies on, and the jumps between curves it detected (reported, never hidden).
+#include "cyclopt/nlp/solver_options.hpp"
+#include <Eigen/Core>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace cyclopt::continuation {
+
+struct CurvePoint {
+  double parameter = 0.0;
+  int curve_id = 0;
+  bool on_grid = false;         // parameter is one of the requested values p_1..p_Q
+  bool converged = false;       // corrector reached a KKT point
+  Eigen::VectorXd x;
+  double objective = 0.0;
+  nlp::SolverSummary corrector;  // the solve of Algorithm 2 step 19 (step 1 for the first point)
+  int predictor_attempts = 0;    // QP-predictor tries (trust-region reductions + 1); 0 for trivial
+  int predictor_steps = 0;       // SQP steps spent in the QP predictor (d_1, d_2 and retries)
+  double kappa = std::numeric_limits<double>::quiet_NaN();  // eq. (7.2) of the accepted predictor
+  double trust_region = 0.0;     // Delta_k when the step was taken
+  double seconds = 0.0;          // predictor + corrector wall time of this point
+};
+
+struct CurveJump {
+  int from_curve = 0, to_curve = 0;
+  double from_parameter = 0.0, to_parameter = 0.0;
+  double objective_before = 0.0, objective_after = 0.0;
+  double relative_distance = 0.0;  // |x_after - x_before|_2 / max(1, |x_before|_2)
+};
+
+struct ContinuationResult {
+  std::vector<CurvePoint> points;  // in the order solved
+  std::vector<CurveJump> jumps;
+  bool finished = false;           // reached the last requested value
+  std::string message;             // why it stopped
+  int next_curve_id = 0;           // first id not used by this run
+  int corrector_iterations = 0;    // sum over points
+  int predictor_steps = 0;
+  double seconds = 0.0;
+};
+
+}  // namespace cyclopt::continuation

@@ -1,0 +1,188 @@
+#include "cyclopt/service/walker_continuation_kinds.hpp"
+
+#include "cyclopt/continuation/continuation_solver.hpp"
+#include "cyclopt/continuation/speed_sweep.hpp"
+#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/service/walker_points.hpp"
+#include "cyclopt/walker/model_parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace cyclopt::service {
+
+namespace {
+
+using continuation::CurvePoint;
+
+struct ContinuationJob {
+  WalkerJob walker;
+  continuation::ContinuationOptions options;
+  std::string parameter = "speed";
+  std::vector<double> values;  // p_0, p_1, ...: the speeds, or "continuation.values"
+  std::vector<double> seed_speeds{0.3, 1.3, 2.3};
+};
+
+ContinuationJob parse_continuation_job(const nlohmann::json& spec) {
+  ContinuationJob j;
+  j.walker = parse_walker_job(spec, true);
+  j.options.corrector = j.walker.solver;
+  j.values = j.walker.speeds;
+  if (!spec.contains("continuation")) return j;
+  const nlohmann::json& c = object_value(spec["continuation"], "continuation");
+  reject_unknown_keys(c, "continuation",
+                      {"predictor", "fixed_step", "min_trust_region", "max_trust_region", "parameter", "values", "seed_speeds"});
+  if (c.contains("predictor"))
+    j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", {"qp", "trivial"}));
+  j.options.fixed_step = optional_number(c, "continuation", "fixed_step", 0.0, 1e3).value_or(0.0);
+  j.options.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(j.options.min_trust_region);
+  j.options.max_trust_region = optional_number(c, "continuation", "max_trust_region", 0.0, 1e3).value_or(0.0);
+  if (c.contains("seed_speeds"))
+    j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
+  if (c.contains("parameter")) {
+    std::vector<std::string> names = walker::model_parameter_names(j.walker.model());
+    names.insert(names.begin(), "speed");
+    j.parameter = enum_value(c["parameter"], "continuation.parameter", names);
+  }
+  if (j.parameter != "speed") {
+    if (!c.contains("values")) throw SpecError("continuation.values", "is required when continuation.parameter is not speed");
+    j.values = parse_value_range(c["values"], "continuation.values", -1e3, 1e3);
+    if (std::find(j.walker.problem.free_parameters.begin(), j.walker.problem.free_parameters.end(), j.parameter) !=
+        j.walker.problem.free_parameters.end())
+      throw SpecError("continuation.parameter", "must not be one of free_parameters");
+  }
+  if (j.values.size() < 2) throw SpecError(j.parameter == "speed" ? "speeds" : "continuation.values", "needs at least two values");
+  return j;
+}
+
+// Stores curve points as they come: curve_index = curve id + offset, numbered along the curve.
+class CurveStore {
+ public:
+  CurveStore(JobContext& ctx, const continuation::ParametricProblem& family, int offset)
+      : ctx_(ctx), family_(family), offset_(offset) {}
+
+  bool operator()(const CurvePoint& c) {
+    const int curve = c.curve_id + offset_;
+    if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(c.curve_id), family_.parameter_name);
+    const int index = counts_[curve]++;
+    ctx_.store_point(point(c, {curve, index}));
+    return ctx_.stop_reason() == StopReason::none;
+  }
+
+  storage::SolutionPoint point(const CurvePoint& c, storage::PointKey key) const {
+    const std::unique_ptr<nlp::Problem> problem = family_.at(c.parameter);
+    walker::GaitOptimum opt;
+    opt.summary = c.corrector;
+    opt.z = c.x;
+    opt.gait = dynamic_cast<const walker::GaitProblem&>(*problem).gait_at(c.x);
+    opt.start = c.predictor_attempts > 0 ? "QP predictor" : "previous point";
+    storage::SolutionPoint p = point_of(opt, key, c.parameter);
+    p.values["curve_id"] = c.curve_id;
+    p.values["on_grid"] = c.on_grid;
+    p.values["converged"] = c.converged;
+    p.values["predictor_attempts"] = c.predictor_attempts;
+    p.values["predictor_steps"] = c.predictor_steps;
+    if (std::isfinite(c.kappa)) p.values["kappa"] = c.kappa;
+    p.values["trust_region"] = c.trust_region;
+    p.values["point_seconds"] = c.seconds;
+    p.values["x"] = std::vector<double>(c.x.data(), c.x.data() + c.x.size());
+    return p;
+  }
+
+ private:
+  JobContext& ctx_;
+  const continuation::ParametricProblem& family_;
+  const int offset_;
+  std::map<int, int> counts_;
+};
+
+// Corrector options that count iterations, report progress and honour stop requests.
+nlp::SolverOptions reporting(nlp::SolverOptions o, JobContext& ctx, const std::string& what) {
+  o.on_iteration = [&ctx, what](const nlp::IterationReport& r) {
+    ctx.count_iterations(1);
+    ctx.report_progress({.iteration = r.iteration, .objective = r.objective, .constraint_violation = r.constraint_violation,
+                         .points_total = -1, .message = what});
+    return ctx.stop_reason() == StopReason::none;
+  };
+  return o;
+}
+
+void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
+  ContinuationJob job = parse_continuation_job(spec);
+  const walker::WalkerModel<double> model = job.walker.model();
+  walker::GaitProblemOptions po = job.walker.problem;
+  po.speed = job.walker.speeds.front();
+  ctx.announce(static_cast<int>(job.values.size()));
+  job.options.corrector = reporting(job.options.corrector, ctx, "continuation over " + job.parameter);
+  const continuation::ParametricProblem family = continuation::walker_family(model, po, job.parameter);
+  walker::GaitProblemOptions first = po;
+  if (job.parameter == "speed") first.speed = job.values.front();
+  Eigen::VectorXd x0;
+  if (job.walker.start) {
+    x0 = walker::GaitProblem(model, first).initial_point(*job.walker.start);
+  } else {  // the first point from the automatic starting gait (Algorithm 2, step 1 solves it)
+    walker::StartingGaitOptions so;
+    so.speed = first.speed;
+    const walker::StartingGait sg = walker::starting_gait(walker::GaitEvaluator(model), so);
+    if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(first.speed) + " m/s: " + sg.message);
+    x0 = walker::GaitProblem(model, first).initial_point(sg.x);
+  }
+  CurveStore store(ctx, family, 0);
+  const continuation::ContinuationResult r =
+      continuation::continue_solution(family, x0, job.values, job.options, {}, [&](const CurvePoint& c) { return store(c); });
+  if (ctx.stop_reason() != StopReason::none) return;
+  if (r.points.empty() || !r.points.front().converged) throw std::runtime_error("continuation: " + r.message);
+}
+
+void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
+  ContinuationJob job = parse_continuation_job(spec);
+  const walker::WalkerModel<double> model = job.walker.model();
+  continuation::SpeedSweepOptions so;
+  so.speeds = job.values;
+  so.seed_speeds = job.seed_speeds;
+  so.starts = job.walker.starts;
+  so.seed = job.walker.seed;
+  so.scale = job.walker.scale;
+  so.continuation = job.options;
+  so.continuation.corrector = reporting(job.options.corrector, ctx, "speed sweep");
+  const continuation::ParametricProblem family = continuation::walker_family(model, job.walker.problem, "speed");
+  ctx.announce(static_cast<int>(so.speeds.size()));
+  CurveStore store(ctx, family, 1);
+  const continuation::SpeedSweepResult r =
+      continuation::speed_sweep(model, job.walker.problem, so, [&](const CurvePoint& c) { return store(c); });
+  if (ctx.stop_reason() != StopReason::none) return;
+  ctx.add_curve(0, "best solution per speed", "speed");
+  for (std::size_t i = 0; i < r.best.size(); ++i) {
+    const continuation::BestPoint& b = r.best[i];
+    storage::SolutionPoint p;
+    if (b.found) {
+      p = store.point(b.point, {0, static_cast<int>(i)});
+    } else {
+      p.key = {0, static_cast<int>(i)};
+      p.parameter = b.speed;
+      p.status = "not found";
+      p.values["reason"] = b.reason;
+    }
+    p.values["sweep_seconds"] = r.seconds;
+    p.values["curves"] = r.curves;
+    ctx.store_point(p);
+  }
+}
+
+JobKind continuation_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
+  std::vector<std::string> fields = walker_job_fields(true);
+  fields.push_back("continuation");
+  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run};
+}
+
+}  // namespace
+
+JobKind walker_continuation_kind() { return continuation_kind("continuation", run_continuation); }
+JobKind walker_sweep_kind() { return continuation_kind("sweep", run_sweep); }
+
+}  // namespace cyclopt::service

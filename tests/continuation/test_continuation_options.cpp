@@ -1,0 +1,110 @@
+// Options, parameter grids and the jump test of the continuation (seed 001, Table 7.1), and
+// Algorithm 2 on a one-variable family min (x - p)^2 whose evaluation fails beyond p = 1.05.
+#include "cyclopt/continuation/continuation_solver.hpp"
+#include "cyclopt/continuation/curve_jump.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace cyclopt::continuation;
+
+namespace {
+
+class Shifted : public cyclopt::nlp::Problem {
+ public:
+  explicit Shifted(double p) : p_(p) {}
+  int num_variables() const override { return 1; }
+  int num_equalities() const override { return 0; }
+  int num_inequalities() const override { return 0; }
+  cyclopt::nlp::EvaluationStatus evaluate(const Eigen::VectorXd& x, bool with_derivatives, cyclopt::nlp::Evaluation& out) override {
+    if (p_ > 1.05) return cyclopt::nlp::EvaluationStatus::failure("no solution beyond p = 1.05");
+    out.objective = (x[0] - p_) * (x[0] - p_);
+    out.equalities.resize(0);
+    out.inequalities.resize(0);
+    if (with_derivatives) {
+      out.gradient = Eigen::VectorXd::Constant(1, 2.0 * (x[0] - p_));
+      out.equality_jacobian.resize(0, 1);
+      out.inequality_jacobian.resize(0, 1);
+    }
+    return cyclopt::nlp::EvaluationStatus::success();
+  }
+
+ private:
+  double p_;
+};
+
+const ParametricProblem shifted{"p", [](double p) { return std::make_unique<Shifted>(p); }};
+
+}  // namespace
+
+TEST(ContinuationOptions, DefaultsAreTable7_1AndValidate) {
+  const ContinuationOptions o;
+  EXPECT_DOUBLE_EQ(o.tau, 0.8);
+  EXPECT_DOUBLE_EQ(o.eta, 1e-4);
+  EXPECT_DOUBLE_EQ(o.min_trust_region, 0.002);
+  EXPECT_NO_THROW(validate(o));
+}
+
+TEST(ContinuationOptions, ErrorsNameTheField) {
+  ContinuationOptions o;
+  o.tau = 1.0;
+  try {
+    validate(o);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tau"), std::string::npos);
+  }
+  EXPECT_THROW(parse_predictor("tangent"), std::invalid_argument);
+  EXPECT_EQ(parse_predictor("qp"), Predictor::qp);
+}
+
+TEST(ContinuationOptions, ParametersMustBeMonotone) {
+  const ParametricProblem none{"p", {}};
+  EXPECT_THROW(continue_solution(none, Eigen::VectorXd::Zero(1), {1.0}, {}), std::invalid_argument);
+  EXPECT_THROW(continue_solution(none, Eigen::VectorXd::Zero(1), {1.0, 1.2, 1.1}, {}), std::invalid_argument);
+}
+
+TEST(CurveJump, SecantFarAboveThePreviousOneIsAJump) {
+  const ContinuationOptions o;
+  const Eigen::VectorXd a = Eigen::VectorXd::Ones(4);
+  Eigen::VectorXd near = a, far = a;
+  near[0] += 0.01;
+  far[0] += 1.0;
+  EXPECT_FALSE(test_jump(a, near, 0.1, 0.1, o).jump);
+  EXPECT_TRUE(test_jump(a, far, 0.1, 0.1, o).jump);
+  EXPECT_FALSE(test_jump(a, far, 0.1, 20.0, o).jump);  // the curve itself moves that fast
+  EXPECT_TRUE(test_jump(a, far, 0.1, std::nullopt, o).jump);
+  EXPECT_FALSE(test_jump(a, near, 0.1, std::nullopt, o).jump);
+}
+
+TEST(Continuation, HitsEveryRequestedValueExactly) {
+  const std::vector<double> grid{0.0, 0.1, 0.2, 0.3};
+  const ContinuationResult r = continue_solution(shifted, Eigen::VectorXd::Zero(1), grid, {});
+  ASSERT_TRUE(r.finished) << r.message;
+  std::vector<double> hit;
+  for (const CurvePoint& p : r.points) {
+    EXPECT_TRUE(p.converged);
+    EXPECT_NEAR(p.x[0], p.parameter, 1e-6);
+    EXPECT_EQ(p.curve_id, 0);
+    if (p.on_grid) hit.push_back(p.parameter);
+  }
+  EXPECT_EQ(hit, grid);
+  EXPECT_TRUE(r.jumps.empty());
+}
+
+TEST(Continuation, StopsAtTheMinimalStepWhereTheCorrectorKeepsFailing) {
+  for (const Predictor predictor : {Predictor::qp, Predictor::trivial}) {
+    ContinuationOptions o;
+    o.predictor = predictor;
+    const ContinuationResult r = continue_solution(shifted, Eigen::VectorXd::Zero(1), {1.0, 1.1}, o);
+    EXPECT_FALSE(r.finished);
+    EXPECT_NE(r.message.find("minimal step"), std::string::npos) << r.message;
+    double last = 0.0;
+    for (const CurvePoint& p : r.points)
+      if (p.converged) last = p.parameter;
+    EXPECT_GT(last, 1.05 - 2 * o.min_trust_region);
+    EXPECT_LE(last, 1.05);
+    EXPECT_LT(r.points.size(), 60u);
+  }
+}
