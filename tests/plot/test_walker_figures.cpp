@@ -28,11 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path out_dir() {
-  const fs::path d = fs::temp_directory_path() / "cyclopt_test_walker_figures";
-  fs::create_directories(d);
-  return d;
-}
+fs::path out_dir() { return testing::output_dir("cyclopt_test_walker_figures"); }
 
 std::string text_of(const fs::path& p) {
   std::ifstream in(p);
@@ -228,7 +224,7 @@ TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   EXPECT_NEAR(s.shapes[0].points[1][0], 0.0, 1e-12);
   const fs::path png = out_dir() / "giant_swing.png";
   const RenderOptions size = fitted_options(s, 800);
-  EXPECT_NEAR(size.width, 800, 100);  // a full circle of swings is about as wide as high
+  EXPECT_NEAR(size.width, 800 + s.legend_room, 100);  // a full circle of swings is about as wide as high
   render(s, png.string(), size);
   const testing::PngImage img = testing::inspect_png(png.string());
   EXPECT_EQ(img.height, 800);

@@ -55,11 +55,12 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
 
   Scene scene;
   const double dt = period / o.frames_per_step;
-  scene.axes = {"Gait stroboscope at v = " + fixed(point.gait.value("mean_speed", point.speed), 2) + " m/s, " +
-                    std::to_string(o.steps) + " steps, every " + fixed(dt * 1000, 0) + " ms (seed 001 Fig. 9.2)",
+  scene.axes = {std::to_string(o.steps) + " steps at v = " + fixed(point.gait.value("mean_speed", point.speed), 2) +
+                    " m/s, every " + fixed(dt * 1000, 0) + " ms (seed 001 Fig. 9.2)",
                 "x (m)", "z (m)", false};
   scene.ground_z = 0.0;
   scene.pad = 0.04;
+  scene.legend_room = 380;  // the legend beside the walker, not over the torsos
   const double peak_clearance = *std::max_element(swing_z.begin(), swing_z.end());
   for (int k = 0; k < o.steps; ++k) {
     const double dx = k * step;

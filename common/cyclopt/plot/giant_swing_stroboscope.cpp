@@ -43,6 +43,7 @@ Scene giant_swing_stroboscope(const giant_swing::Model& model, const nlohmann::j
   char title[120];
   std::snprintf(title, sizeof title, "Giant swing at %g Hz, %zu round(s) (seed 000 Fig. 5.5)", rate_hz, sim.rounds.size());
   scene.axes = {title, "x from the bar (m)", "height above the bar (m)", false};
+  scene.legend_room = 260;  // the legend beside the circle of swings
   Shape hip_path{{}, {0.45, 0.45, 0.45, 1}, 1.2, true, false, std::nullopt,
                  sim.failed ? "hip path (failed: " + sim.failure_reason + ")" : "hip path"};
   Shape feet_path{{}, kLegs, 1.2, true, false, std::nullopt, "feet path"};

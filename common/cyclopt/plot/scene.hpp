@@ -35,6 +35,7 @@ struct Scene {
   std::vector<Marker> markers;
   std::optional<double> ground_z;  // draws the ground line and hatching at this height
   double pad = 0.05;               // margin around the content, fraction of its size
+  double legend_room = 0;          // pixels kept empty right of the content for the legend
 };
 
 // Options of `height` pixels whose width gives the scene's content (with its pad) the plot area's
