@@ -185,7 +185,8 @@ TEST_F(WalkerFigures, StroboscopeShowsGroundContactPointsFeetAndClearance) {
   // The contact point moves forwards along the sole during a step and the second step starts one
   // step length further on.
   EXPECT_LT(s.markers[0].x, s.markers[2 * 6].x);
-  const std::vector<std::string> paths = write_figure(f, out_dir().string());
+  // Its own folder: ctest runs the tests of this file in parallel.
+  const std::vector<std::string> paths = write_figure(f, (out_dir() / "stroboscope_test").string());
   const testing::PngImage img = testing::inspect_png(paths[0]);
   EXPECT_GT(img.count({0.84, 0.15, 0.16, 1}, 0.1), 100) << "contact points";
   EXPECT_GT(img.count({0.17, 0.63, 0.17, 1}, 0.1), 100) << "clearance path";
@@ -222,7 +223,7 @@ TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   // The upper body is L1 long in every frame; the first frame is the handstand.
   EXPECT_NEAR(std::hypot(s.shapes[0].points[1][0], s.shapes[0].points[1][1]), giant_swing::appendix_b_gymnast().L1, 1e-12);
   EXPECT_NEAR(s.shapes[0].points[1][0], 0.0, 1e-12);
-  const fs::path png = out_dir() / "giant_swing.png";
+  const fs::path png = out_dir() / "giant_swing_test.png";
   const RenderOptions size = fitted_options(s, 800);
   EXPECT_NEAR(size.width, 800 + s.legend_room, 100);  // a full circle of swings is about as wide as high
   render(s, png.string(), size);
