@@ -72,8 +72,9 @@ LineChart cost_of_transport_chart(const std::vector<WalkerJobResults>& jobs) {
 
 LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
   LineChart chart;
-  chart.axes = {"Maximal joint torques during the step (seed 001 Fig. 9.4)", "mean speed v (m/s)",
+  chart.axes = {"Maximal joint torques (seed 001 Fig. 9.4)", "mean speed v (m/s)",
                 "max |u| over the step (N m)", true};
+  int omitted = 0;  // points, counted once per job
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const int joints = jobs[k].job.foot.model == foot::FootModel::point ? 4 : 6;
     for (int j = 0; j < joints; ++j) {
@@ -83,11 +84,14 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
         if (p.converged && p.trajectory.contains("torque")) {
           s.x.push_back(p.gait.value("mean_speed", p.speed));
           s.y.push_back(max_abs_torque(p, j));
+        } else {
+          omitted += j == 0;
         }
       if (!s.x.empty()) chart.series.push_back(std::move(s));
     }
   }
   if (chart.series.empty()) throw std::invalid_argument("'" + chart.axes.title + "': no converged gait with torques");
+  if (omitted > 0) chart.axes.title += ", " + std::to_string(omitted) + " unconverged point(s) not drawn";
   start_at_zero(chart);
   return chart;
 }
