@@ -1,4 +1,8 @@
 // cyclopt: command-line client of the cyclopt job server (see kUsage).
+#include "cyclopt/giant_swing/model.hpp"
+#include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/walker_figures.hpp"
+#include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "row_table.hpp"
@@ -17,8 +21,8 @@ namespace {
 constexpr const char* kUsage = R"(usage: cyclopt [--lcm-url URL] [--timeout S] COMMAND [ARGS]
 
 Client of the cycloptd job server. Remote commands talk LCM (default URL: LCM's, i.e.
-LCM_DEFAULT_URL or UDP multicast); status, list, query and export read a results database file
-directly (read-only) when given --db FILE.
+LCM_DEFAULT_URL or UDP multicast); status, list, query, export, plot and report read a
+results database file directly (read-only) when given --db FILE.
 
   submit --spec FILE.json [--request-id ID] [--watch]
   submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI [--point-delay-ms N]
@@ -36,6 +40,16 @@ directly (read-only) when given --db FILE.
   export JOB [--out FILE]
                      everything about a job as JSON: spec, events, curves, points, trajectories
   cancel JOB         cancel a queued or running job
+  plot KIND (--job JOB ... | --from FILE.json ...) [--speed V] [--out DIR]
+                     write DIR/NAME.png and DIR/NAME.svg (default DIR: .) for walker jobs
+                     (from the server, --db FILE, or files `export` wrote; several jobs give
+                     one curve each). KIND: cost-of-transport (Fig. 9.19a), torques (9.4),
+                     step-length (9.6a), floquet (9.6b), stroboscope (9.2; gait nearest
+                     --speed, first job), foot (3.5a), all; or giant-swing --result FILE
+                     (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
+  report JOB [--out FILE.html]
+                     one self-contained HTML page: spec, solved points, all figures
+                     (default FILE: jobJOB.html)
 
 Output of status, list, query: aligned table, or --json / --csv.
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE.
@@ -49,8 +63,10 @@ struct Options {
   std::string command;
   std::vector<std::string> positional;
   std::string lcm_url, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
-      what = "solutions";
-  double timeout = 10.0, watch_timeout = 3600.0;
+      what = "solutions", result;
+  std::vector<std::int64_t> jobs;
+  std::vector<std::string> from;
+  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan("");
   int point_delay_ms = -1;
   bool watch = false;
   cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
@@ -62,6 +78,17 @@ struct UsageError : std::invalid_argument {
 struct NoAnswer : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A positive integer job id; `what` names where it came from.
+std::int64_t job_id(const std::string& what, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const long long id = std::stoll(text, &used);
+    if (used == text.size() && id > 0) return id;
+  } catch (const std::exception&) {
+  }
+  throw UsageError(what + " must be a positive integer job id, got '" + text + "'");
+}
 
 Options parse_args(int argc, char** argv) {
   Options o;
@@ -94,6 +121,10 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--state") o.state = next();
     else if (a == "--what") o.what = next();
     else if (a == "--out") o.out = next();
+    else if (a == "--job") o.jobs.push_back(job_id(a, next()));
+    else if (a == "--from") o.from.push_back(next());
+    else if (a == "--result") o.result = next();
+    else if (a == "--speed") o.speed = number(next());
     else if (a == "--watch") o.watch = true;
     else if (a == "--json") o.format = cyclopt::client::RowFormat::json;
     else if (a == "--csv") o.format = cyclopt::client::RowFormat::csv;
@@ -115,13 +146,7 @@ std::string read_file(const std::string& path) {
 
 std::int64_t job_argument(const Options& o) {
   if (o.positional.size() != 1) throw UsageError(o.command + " needs exactly one JOB id");
-  try {
-    std::size_t used = 0;
-    const long long id = std::stoll(o.positional[0], &used);
-    if (used == o.positional[0].size() && id > 0) return id;
-  } catch (const std::exception&) {
-  }
-  throw UsageError("JOB must be a positive integer job id, got '" + o.positional[0] + "'");
+  return job_id("JOB", o.positional[0]);
 }
 
 // The spec text of `submit`: the file's, or a foot_sweep built from flags.
@@ -265,10 +290,16 @@ int cancel(Session& s, const Options& o) {
   return kOk;
 }
 
-int export_job(Session& s, const Options& o) {
-  const std::int64_t id = job_argument(o);
+// Everything about a job: the job row with its spec and the rows of every part (kJobParts).
+nlohmann::json job_document(Session& s, std::int64_t id) {
   nlohmann::json j = s.fetch(cyclopt::storage::query_for("job", id)).rows.at(0);
   for (const char* what : cyclopt::storage::kJobParts) j[what] = s.fetch(cyclopt::storage::query_for(what, id)).rows;
+  return j;
+}
+
+int export_job(Session& s, const Options& o) {
+  const std::int64_t id = job_argument(o);
+  const nlohmann::json j = job_document(s, id);
   if (o.out.empty()) {
     std::cout << j.dump(2) << "\n";
     return kOk;
@@ -280,6 +311,40 @@ int export_job(Session& s, const Options& o) {
   return kOk;
 }
 
+int plot(Session& s, const Options& o) {
+  if (o.positional.size() != 1) throw UsageError("plot needs exactly one KIND");
+  const std::string& kind = o.positional[0];
+  const std::string dir = o.out.empty() ? "." : o.out;
+  std::vector<cyclopt::plot::Figure> figures;
+  if (kind == "giant-swing") {
+    if (o.result.empty()) throw UsageError("plot giant-swing needs --result FILE (cyclopt-giant-swing output)");
+    cyclopt::plot::Scene scene = cyclopt::plot::giant_swing_stroboscope(cyclopt::giant_swing::appendix_b_gymnast(),
+                                                                        nlohmann::json::parse(read_file(o.result)));
+    const cyclopt::plot::RenderOptions size = cyclopt::plot::fitted_options(scene, 800);
+    figures.push_back({"giant_swing_stroboscope", "Giant swing stroboscope (seed 000 Fig. 5.5)", std::move(scene), size});
+  } else {
+    if (o.jobs.empty() && o.from.empty()) throw UsageError("plot " + kind + " needs --job JOB or --from FILE.json");
+    std::vector<cyclopt::plot::WalkerJobResults> jobs;
+    for (std::int64_t id : o.jobs) jobs.push_back(cyclopt::plot::walker_job_results(job_document(s, id)));
+    for (const std::string& f : o.from) jobs.push_back(cyclopt::plot::walker_job_results(nlohmann::json::parse(read_file(f))));
+    if (kind == "all") figures = cyclopt::plot::walker_figures(jobs, o.speed);
+    else figures.push_back(cyclopt::plot::walker_figure(kind, jobs, o.speed));
+  }
+  for (const cyclopt::plot::Figure& f : figures) {
+    const std::vector<std::string> paths = cyclopt::plot::write_figure(f, dir);
+    std::printf("%s: %s %s\n", f.caption.c_str(), paths[0].c_str(), paths[1].c_str());
+  }
+  return kOk;
+}
+
+int report(Session& s, const Options& o) {
+  const std::int64_t id = job_argument(o);
+  const std::string path = o.out.empty() ? "job" + std::to_string(id) + ".html" : o.out;
+  cyclopt::plot::write_html(cyclopt::plot::walker_job_report(job_document(s, id)), path);
+  std::printf("report of job %lld: %s\n", static_cast<long long>(id), path.c_str());
+  return kOk;
+}
+
 int run(const Options& o) {
   Session s(o);
   if (o.command == "submit") return submit(s, o);
@@ -287,6 +352,8 @@ int run(const Options& o) {
   if (o.command == "status") return status(s, o);
   if (o.command == "cancel") return cancel(s, o);
   if (o.command == "export") return export_job(s, o);
+  if (o.command == "plot") return plot(s, o);
+  if (o.command == "report") return report(s, o);
   if (o.command == "list") {
     cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows, o.format);
     return kOk;

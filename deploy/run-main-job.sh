@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
-# Proposed main job of the service (README, "The service"): starts cycloptd with a fresh
-# database in out/service/, submits a foot sweep of the default foot (the seed's P2 foot with
-# shoes, density 20..60 kg/m^2), watches it and prints the result table.
+# Main job of the service (README, "The service" and "Pictures and reports"): starts cycloptd with a
+# fresh database in out/service/, submits a walker speed sweep (optimal gaits of the default foot,
+# the seed's P2 foot with shoes, over SPEEDS), watches it, prints the result table, then writes the
+# pictures (PNG and SVG) to out/pictures/ and the job's HTML report to out/report.html, and the
+# giant swing stroboscope of the seed's single swing beside them.
 # LCM traffic stays inside a private network namespace created here (needs root): nothing goes
 # on the host's network. Run after the build (cmake --build build).
+# Environment: FOOT (preset or foot JSON file), SPEEDS (lo:step:hi, m/s), GIANT_SWING=0 to skip
+# the giant swing (about 70 s of CPU).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
+FOOT=${FOOT:-P2-shoes-left-HMT}
+SPEEDS=${SPEEDS:-0.5:0.25:1.5}
 OUT=out/service
+PICTURES=out/pictures
 if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
   mkdir -p "$OUT"
   rm -f "$OUT"/cyclopt.db "$OUT"/cyclopt.db-wal "$OUT"/cyclopt.db-shm
@@ -19,8 +26,14 @@ export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
 "$BUILD/server/cycloptd" --database "$OUT/cyclopt.db" 2>"$OUT/cycloptd.log" &
 SERVER=$!
 trap 'kill -TERM $SERVER 2>/dev/null; wait $SERVER' EXIT
-"$BUILD/client/cyclopt" submit --foot P2-shoes-left-HMT --sweep density --values 20:5:60 \
-  --point-delay-ms 100 --name "default foot, density sweep" --watch
+"$BUILD/client/cyclopt" submit --foot "$FOOT" --speeds "$SPEEDS" --name "optimal gaits of $FOOT over $SPEEDS m/s" --watch
 JOB=$("$BUILD/client/cyclopt" list --json | grep -o '"id": [0-9]*' | tail -1 | grep -o '[0-9]*')
 "$BUILD/client/cyclopt" query "$JOB"
 echo "database: $OUT/cyclopt.db (read it with: $BUILD/client/cyclopt query $JOB --db $OUT/cyclopt.db)"
+"$BUILD/client/cyclopt" plot all --job "$JOB" --db "$OUT/cyclopt.db" --out "$PICTURES"
+"$BUILD/client/cyclopt" report "$JOB" --db "$OUT/cyclopt.db" --out out/report.html
+if [ "${GIANT_SWING:-1}" != 0 ]; then
+  "$BUILD/client/cyclopt-giant-swing" --preset single_swing > out/giant_swing.json
+  "$BUILD/client/cyclopt" plot giant-swing --result out/giant_swing.json --out "$PICTURES"
+fi
+echo "pictures: $PICTURES/*.png (SVG beside each); report: out/report.html (one self-contained page)"

@@ -6,9 +6,17 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 namespace cyclopt::plot::testing {
+
+// A fresh-enough folder for a test binary's pictures under the temporary directory.
+inline std::filesystem::path output_dir(const std::string& name) {
+  const std::filesystem::path d = std::filesystem::temp_directory_path() / name;
+  std::filesystem::create_directories(d);
+  return d;
+}
 
 struct PngImage {
   int width = 0, height = 0;

@@ -18,11 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path out_dir() {
-  const fs::path d = fs::temp_directory_path() / "cyclopt_test_plot";
-  fs::create_directories(d);
-  return d;
-}
+fs::path out_dir() { return testing::output_dir("cyclopt_test_plot"); }
 
 std::string head_of(const fs::path& p, std::size_t n) {
   std::ifstream in(p, std::ios::binary);

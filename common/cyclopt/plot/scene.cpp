@@ -22,10 +22,8 @@ std::vector<LegendEntry> legend_entries(const Scene& scene) {
   return out;
 }
 
-}  // namespace
-
-void render(const Scene& scene, const std::string& path, const RenderOptions& options) {
-  std::vector<double> xs, zs;
+// All drawn coordinates of the scene (shapes, markers, ground height).
+void content(const Scene& scene, std::vector<double>& xs, std::vector<double>& zs) {
   for (const Shape& s : scene.shapes)
     for (const auto& p : s.points) {
       xs.push_back(p[0]);
@@ -35,11 +33,35 @@ void render(const Scene& scene, const std::string& path, const RenderOptions& op
     xs.push_back(m.x);
     zs.push_back(m.z);
   }
-  if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
   if (scene.ground_z) zs.push_back(*scene.ground_z);
+}
+
+// The padded x range widened to the right by legend_room pixels at the scale that fits the z range
+// into a canvas of `height` (Axes margins: 48 + 62 px vertically with a title, 80 + 24 horizontally).
+Range x_range_of(const Scene& scene, const std::vector<double>& xs, Range z, double height) {
+  Range x = data_range(xs, scene.pad);
+  x.hi += scene.legend_room * (z.hi - z.lo) / (height - 110);
+  return x;
+}
+
+}  // namespace
+
+RenderOptions fitted_options(const Scene& scene, double height, double min_width, double max_width) {
+  std::vector<double> xs, zs;
+  content(scene, xs, zs);
+  const Range z = data_range(zs, scene.pad), x = x_range_of(scene, xs, z, height);
+  const double width = 104 + (height - 110) * (x.hi - x.lo) / (z.hi - z.lo);
+  return {std::clamp(width, min_width, max_width), height};
+}
+
+void render(const Scene& scene, const std::string& path, const RenderOptions& options) {
+  std::vector<double> xs, zs;
+  content(scene, xs, zs);
+  if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
   Canvas canvas(path, options.width, options.height);
   canvas.fill_background({1, 1, 1, 1});
-  Axes axes(canvas, data_range(xs, scene.pad), data_range(zs, scene.pad), scene.axes, /*equal_scale=*/true);
+  const Range z = data_range(zs, scene.pad);
+  Axes axes(canvas, x_range_of(scene, xs, z, options.height), z, scene.axes, /*equal_scale=*/true);
   axes.draw_grid();
   axes.clip_to_plot_area();
   if (scene.ground_z) {

@@ -1,0 +1,96 @@
+#include "cyclopt/plot/gait_stroboscope.hpp"
+
+#include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/walker_pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cyclopt::plot {
+namespace {
+
+constexpr Color kLegA{0.12, 0.47, 0.71, 1}, kLegB{0.84, 0.37, 0.0, 1}, kTorso{0.25, 0.25, 0.25, 1};
+constexpr Color kContact{0.84, 0.15, 0.16, 1}, kClearance{0.17, 0.63, 0.17, 1};
+
+std::vector<double> row(const nlohmann::json& rows, std::size_t i) { return rows.at(i).get<std::vector<double>>(); }
+
+// q_s at time t by linear interpolation of the stored grid (time is increasing).
+walker::CoordinateVector<double> q_at(const nlohmann::json& tr, const std::vector<double>& time, double t) {
+  const auto hi = std::upper_bound(time.begin(), time.end(), t);
+  const std::size_t j = std::clamp<std::size_t>(static_cast<std::size_t>(hi - time.begin()), 1, time.size() - 1);
+  const double w = std::clamp((t - time[j - 1]) / (time[j] - time[j - 1]), 0.0, 1.0);
+  const nlohmann::json& q = tr.at("q");
+  walker::CoordinateVector<double> out(static_cast<Eigen::Index>(q.size()));
+  for (std::size_t r = 0; r < q.size(); ++r)
+    out(static_cast<Eigen::Index>(r)) = (1 - w) * q[r][j - 1].get<double>() + w * q[r][j].get<double>();
+  return out;
+}
+
+std::vector<Xz> shifted(std::vector<Xz> pts, double dx) {
+  for (Xz& p : pts) p[0] += dx;
+  return pts;
+}
+
+std::string leg_label(const Color& c) {
+  return c.b == kLegA.b ? "leg A (stance in steps 1, 3, ...)" : "leg B (stance in steps 2, 4, ...)";
+}
+
+std::string fixed(double v, int digits) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+}  // namespace
+
+Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, const StroboscopeOptions& o) {
+  if (point.trajectory.is_null()) throw std::invalid_argument("gait stroboscope: the point has no stored trajectory");
+  const walker::WalkerModel<double> model = job.job.model();
+  const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.job.foot) : std::vector<Xz>{};
+  const nlohmann::json& tr = point.trajectory;
+  const std::vector<double> time = tr.at("time").get<std::vector<double>>();
+  const double period = time.back(), step = point.gait.at("step_length").get<double>();
+  const std::vector<double> swing_x = row(tr.at("swing_contact"), 0), swing_z = row(tr.at("swing_contact"), 1);
+
+  Scene scene;
+  const double dt = period / o.frames_per_step;
+  scene.axes = {std::to_string(o.steps) + " steps at v = " + fixed(point.gait.value("mean_speed", point.speed), 2) +
+                    " m/s, every " + fixed(dt * 1000, 0) + " ms (seed 001 Fig. 9.2)",
+                "x (m)", "z (m)", false};
+  scene.ground_z = 0.0;
+  scene.pad = 0.04;
+  scene.legend_room = 380;  // the legend beside the walker, not over the torsos
+  const double peak_clearance = *std::max_element(swing_z.begin(), swing_z.end());
+  for (int k = 0; k < o.steps; ++k) {
+    const double dx = k * step;
+    // Leg "A" is the stance leg of even steps; the legs swap roles at every impact.
+    const Color stance = k % 2 == 0 ? kLegA : kLegB, swing = k % 2 == 0 ? kLegB : kLegA;
+    for (int f = k == 0 ? 0 : 1; f <= o.frames_per_step; ++f) {
+      const WalkerPose p = walker_pose(model, q_at(tr, time, f * dt), outline);
+      const double fade = 0.35 + 0.65 * (k * o.frames_per_step + f) / double(o.steps * o.frames_per_step);
+      auto faded = [fade](Color c) { return Color{c.r, c.g, c.b, fade}; };
+      // Legends on the last, fully opaque frame (the legend takes the first labelled shape's colour).
+      const bool last = k + 1 == o.steps && f == o.frames_per_step;
+      auto label = [last](std::string text) { return last ? text : std::string(); };
+      scene.shapes.push_back({shifted({p.hip, p.torso_tip}, dx), faded(kTorso), 3.0, false, false, std::nullopt, label("torso")});
+      scene.shapes.push_back({shifted({p.hip, p.knee1, p.ankle1}, dx), faded(stance), 2.4, false, false, std::nullopt,
+                              label(leg_label(stance))});
+      scene.shapes.push_back({shifted({p.hip, p.knee2, p.ankle2}, dx), faded(swing), 2.4, false, false, std::nullopt,
+                              label(leg_label(swing))});
+      if (!outline.empty()) {
+        scene.shapes.push_back({shifted(p.foot1, dx), faded(stance), 1.4, false, true, Color{stance.r, stance.g, stance.b, 0.12}, ""});
+        scene.shapes.push_back({shifted(p.foot2, dx), faded(swing), 1.4, false, true, Color{swing.r, swing.g, swing.b, 0.12}, ""});
+      }
+      scene.markers.push_back({p.contact[0] + dx, p.contact[1], kContact, 4.5, "rolling contact point C1 (every frame)"});
+      scene.markers.push_back({p.hip[0] + dx, p.hip[1], kTorso, 3.0, ""});
+    }
+    Shape clearance{{}, kClearance, 1.8, true, false, std::nullopt,
+                    "swing-foot lowest point C2 (peak clearance " + fixed(peak_clearance * 100, 1) + " cm)"};
+    for (std::size_t i = 0; i < swing_x.size(); ++i) clearance.points.push_back({swing_x[i] + dx, swing_z[i]});
+    scene.shapes.push_back(std::move(clearance));
+  }
+  return scene;
+}
+
+}  // namespace cyclopt::plot

@@ -1,0 +1,62 @@
+#include "cyclopt/plot/walker_job_report.hpp"
+
+#include "cyclopt/plot/walker_figures.hpp"
+
+#include <cstdio>
+
+namespace cyclopt::plot {
+namespace {
+
+std::string number(const nlohmann::json& v, const char* format) {
+  if (!v.is_number()) return "-";
+  char b[48];
+  std::snprintf(b, sizeof b, format, v.get<double>());
+  return b;
+}
+
+ReportTable result_table(const WalkerJobResults& r) {
+  ReportTable t;
+  t.header = {"v target (m/s)", "status", "converged", "f_mech (-)", "f_usq (-)",
+              "mean speed (m/s)", "step length (m)", "step period (s)", "Floquet Lambda", "stable",
+              "impact loss (J)", "max inequality"};
+  for (const GaitPoint& p : r.points) {
+    const nlohmann::json& g = p.gait;
+    auto at = [&](const char* k) { return g.contains(k) ? g[k] : nlohmann::json(); };
+    t.rows.push_back({number(p.speed, "%.3f"), p.status, p.converged ? "yes" : "no", number(at("f_mech"), "%.5f"),
+                      number(at("f_usq"), "%.5f"), number(at("mean_speed"), "%.4f"), number(at("step_length"), "%.4f"),
+                      number(at("step_period"), "%.4f"), number(at("floquet_multiplier"), "%.4f"),
+                      g.contains("stable") ? (g["stable"].get<bool>() ? "yes" : "no") : "-",
+                      number(at("impact_energy_loss"), "%.3f"), number(at("max_inequality"), "%.2e")});
+  }
+  return t;
+}
+
+}  // namespace
+
+Report walker_job_report(const nlohmann::json& doc) {
+  const WalkerJobResults r = walker_job_results(doc);
+  Report report;
+  report.title = "cyclopt job " + std::to_string(r.id) + ": " + r.label;
+  report.subtitle = "walker " + doc.value("task", std::string()) + ", state " + doc.value("state", std::string()) + ", " +
+                    std::to_string(doc.value("points_stored", 0)) + " points stored, " +
+                    number(doc.value("run_seconds", nlohmann::json()), "%.1f") + " s of computation, " +
+                    std::to_string(doc.value("attempts", 0)) + " attempt(s)";
+  ReportSection spec;
+  spec.heading = "Job specification";
+  spec.code = r.spec.dump(2);
+  if (!doc.value("error", std::string()).empty()) spec.text = "error: " + doc["error"].get<std::string>();
+  ReportSection results;
+  results.heading = "Solved points";
+  results.text = "One row per requested speed; f_mech (eq. 5.102) and f_usq (eq. 5.101) per weight and step length, "
+                 "Floquet multiplier Lambda (eq. 5.89), stable for 0 < Lambda < 1 (eq. 5.90), max inequality of eq. 5.104 "
+                 "(<= 0 is feasible).";
+  results.tables.push_back(result_table(r));
+  ReportSection figures;
+  figures.heading = "Figures";
+  for (const Figure& f : walker_figures({r})) figures.figures.push_back({f.caption, svg_of(f)});
+  if (figures.figures.empty()) figures.text = "No converged gait: nothing to draw.";
+  report.sections = {spec, results, figures};
+  return report;
+}
+
+}  // namespace cyclopt::plot

@@ -1,0 +1,49 @@
+#include "cyclopt/plot/walker_job_results.hpp"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace cyclopt::plot {
+
+WalkerJobResults walker_job_results(const nlohmann::json& doc) {
+  WalkerJobResults r;
+  r.id = doc.value("id", std::int64_t{0});
+  const std::string scene = doc.value("scene", ""), task = doc.value("task", "");
+  if (scene != "walker" || task == "foot_sweep" || !doc.contains("spec"))
+    throw std::invalid_argument("job " + std::to_string(r.id) + " is a " + scene + " " + task +
+                                " job; pictures of gaits need a walker evaluate, optimise, multistart or sweep job");
+  r.spec = doc["spec"];
+  r.job = service::parse_walker_job(r.spec, task == "sweep");
+  const std::string foot = r.job.foot.name.empty() ? std::string(foot::to_string(r.job.foot.model)) : r.job.foot.name;
+  r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
+                                     r.spec.value("objective", std::string("f_mech")));
+  std::map<std::pair<int, int>, nlohmann::json> trajectories;
+  for (const nlohmann::json& t : doc.value("trajectories", nlohmann::json::array()))
+    if (t.value("format", "") == "json") trajectories[{t.value("curve", 0), t.value("point", 0)}] = t["data"];
+  for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
+    if (s.value("curve", 0) != 0) continue;
+    GaitPoint p;
+    p.speed = s.at("parameter").is_number() ? s["parameter"].get<double>() : std::nan("");
+    p.status = s.value("status", "");
+    const nlohmann::json& values = s.at("values");
+    p.gait = values.value("gait", nlohmann::json::object());
+    const bool solved = !values.contains("solver") || values["solver"].value("success", false);
+    p.converged = p.gait.value("real", false) && solved;
+    const auto t = trajectories.find({0, s.value("point", 0)});
+    if (t != trajectories.end()) p.trajectory = t->second;
+    r.points.push_back(std::move(p));
+  }
+  return r;
+}
+
+const GaitPoint* point_near(const WalkerJobResults& r, double speed) {
+  const GaitPoint* best = nullptr;
+  for (const GaitPoint& p : r.points) {
+    if (!p.converged || p.trajectory.is_null()) continue;
+    if (!best || (std::isfinite(speed) && std::abs(p.speed - speed) < std::abs(best->speed - speed))) best = &p;
+  }
+  return best;
+}
+
+}  // namespace cyclopt::plot

@@ -1,0 +1,39 @@
+#pragma once
+// The solved points of one walker job as the figures need them, read from a job document: the
+// JSON `cyclopt export` writes (job row with spec, events, curves, solutions, trajectories),
+// whether it came from the server, a database file or an exported file.
+
+#include "cyclopt/service/walker_job_spec.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cyclopt::plot {
+
+struct GaitPoint {
+  double speed = 0;              // requested mean speed (the point's parameter), m/s
+  std::string status;            // solver termination or "ok" / "no real solution"
+  bool converged = false;        // a real gait and, if optimised, a successful solve
+  nlohmann::json gait;           // values.gait (gait_to_json without the trajectory)
+  nlohmann::json trajectory;     // null when none was stored
+};
+
+struct WalkerJobResults {
+  std::int64_t id = 0;
+  std::string label;  // for legends: the spec's name, else "job N: foot, objective"
+  nlohmann::json spec;
+  service::WalkerJob job;  // parsed spec: foot, model constants, objective
+  std::vector<GaitPoint> points;  // curve 0, in point order
+};
+
+// Throws std::invalid_argument when the document is not a walker job of a task with gaits.
+WalkerJobResults walker_job_results(const nlohmann::json& document);
+
+// The converged point whose speed is closest to `speed` (any converged point when NaN) that has a
+// trajectory; nullptr if there is none.
+const GaitPoint* point_near(const WalkerJobResults& r, double speed);
+
+}  // namespace cyclopt::plot

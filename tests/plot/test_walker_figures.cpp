@@ -1,0 +1,274 @@
+// Pictures of walker jobs (issue 7): the drawing kinematics agree with the walker's own geometry
+// (segment lengths, the rolling foot touching the ground at the contact point), every plot kind
+// renders from stored results into valid, non-trivial PNG and SVG files, and `cyclopt plot` /
+// `cyclopt report` work on a results database written through the store API.
+// The gaits are automatic starting gaits (walker::starting_gait), real but not optimal: cheap.
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/walker_figures.hpp"
+#include "cyclopt/plot/walker_job_report.hpp"
+#include "cyclopt/plot/walker_pose.hpp"
+#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/walker/gait_evaluation.hpp"
+#include "cyclopt/walker/gait_optimisation.hpp"
+#include "cyclopt/walker/starting_gait.hpp"
+#include "png_inspection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace cyclopt::plot {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path out_dir() { return testing::output_dir("cyclopt_test_walker_figures"); }
+
+std::string text_of(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// cairo writes colours into SVG as rgb(r%,g%,b%) with the shortest decimals.
+std::string svg_colour(const Color& c) {
+  char b[96];
+  std::snprintf(b, sizeof b, "rgb(%g%%,%g%%,%g%%)", c.r * 100, c.g * 100, c.b * 100);
+  return b;
+}
+
+struct StoredJob {
+  nlohmann::json spec;
+  std::vector<storage::SolutionPoint> points;
+};
+
+// Starting gaits of a foot at the speeds, as the sweep job kind would store them.
+StoredJob starting_gaits(const std::string& foot, const std::vector<double>& speeds, const std::string& name) {
+  StoredJob job;
+  job.spec = {{"scene", "walker"}, {"task", "sweep"}, {"foot", foot}, {"speeds", speeds}, {"name", name}};
+  const walker::GaitEvaluator ev(walker::make_walker_model(foot::foot_preset(foot).spec));
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    walker::StartingGaitOptions so;
+    so.speed = speeds[i];
+    const walker::StartingGait sg = walker::starting_gait(ev, so);
+    EXPECT_TRUE(sg.real) << foot << " at " << speeds[i] << " m/s: " << sg.message;
+    storage::SolutionPoint p;
+    p.key = {0, static_cast<int>(i)};
+    p.parameter = speeds[i];
+    nlohmann::json g = walker::gait_to_json(sg.gait, true);
+    p.trajectory = g["trajectory"];
+    g.erase("trajectory");
+    p.values["gait"] = g;
+    p.status = "ok";
+    job.points.push_back(std::move(p));
+  }
+  return job;
+}
+
+// The job as `cyclopt export` writes it (query rows of result_queries.cpp).
+nlohmann::json document_of(std::int64_t id, const StoredJob& job) {
+  nlohmann::json d = {{"id", id}, {"scene", "walker"}, {"task", "sweep"}, {"state", "done"}, {"spec", job.spec}};
+  d["solutions"] = nlohmann::json::array();
+  d["trajectories"] = nlohmann::json::array();
+  for (const storage::SolutionPoint& p : job.points) {
+    d["solutions"].push_back({{"curve", 0}, {"point", p.key.point_index}, {"parameter", p.parameter},
+                              {"status", p.status}, {"values", p.values}});
+    d["trajectories"].push_back({{"curve", 0}, {"point", p.key.point_index}, {"format", "json"}, {"data", *p.trajectory}});
+  }
+  return d;
+}
+
+class WalkerFigures : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    point_feet_ = new StoredJob(starting_gaits("point", {0.9, 1.0, 1.1}, "point feet"));
+    hmt_ = new StoredJob(starting_gaits("P2-shoes-left-HMT", {1.0, 1.2}, "P2 HMT foot"));
+  }
+  static void TearDownTestSuite() {
+    delete point_feet_;
+    delete hmt_;
+  }
+  static std::vector<WalkerJobResults> both() {
+    return {walker_job_results(document_of(1, *point_feet_)), walker_job_results(document_of(2, *hmt_))};
+  }
+  static StoredJob* point_feet_;
+  static StoredJob* hmt_;
+};
+StoredJob* WalkerFigures::point_feet_ = nullptr;
+StoredJob* WalkerFigures::hmt_ = nullptr;
+
+TEST_F(WalkerFigures, PoseHasTheModelsSegmentLengthsAndTheFootRollsOnTheGround) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const walker::WalkerModel<double> m = r.job.model();
+  const std::vector<Xz> outline = foot_outline(r.job.foot);
+  const nlohmann::json& q = r.points[0].trajectory["q"];
+  auto dist = [](const Xz& a, const Xz& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); };
+  for (std::size_t i = 0; i < q[0].size(); i += 40) {
+    walker::CoordinateVector<double> qi(static_cast<Eigen::Index>(q.size()));
+    for (std::size_t k = 0; k < q.size(); ++k) qi(static_cast<Eigen::Index>(k)) = q[k][i].get<double>();
+    const WalkerPose p = walker_pose(m, qi, outline);
+    EXPECT_NEAR(dist(p.hip, p.knee1), m.segments[walker::l_O], 1e-12);
+    EXPECT_NEAR(dist(p.knee1, p.ankle1), m.segments[walker::l_U], 1e-12);
+    EXPECT_NEAR(dist(p.hip, p.knee2), m.segments[walker::l_O], 1e-12);
+    EXPECT_NEAR(dist(p.knee2, p.ankle2), m.segments[walker::l_U], 1e-12);
+    EXPECT_NEAR(dist(p.hip, p.torso_tip), m.segments[walker::l_T], 1e-12);
+    // The turned outline (mass_properties.hpp) touches the ground exactly at the rolling contact
+    // point of eq. 5.4-5.5, and the swing foot's lowest outline point is C2.
+    const auto lowest = [](const std::vector<Xz>& pts) {
+      return *std::min_element(pts.begin(), pts.end(), [](const Xz& a, const Xz& b) { return a[1] < b[1]; });
+    };
+    const Xz c1 = lowest(p.foot1), c2 = lowest(p.foot2);
+    EXPECT_NEAR(p.contact[1], 0.0, 1e-12);
+    EXPECT_NEAR(c1[1], 0.0, 2e-4);
+    EXPECT_NEAR(c1[0], p.contact[0], 0.01);
+    EXPECT_NEAR(c2[1], p.swing_lowest[1], 2e-4);
+    EXPECT_NEAR(p.hip[0], r.points[0].trajectory["hip"][0][i].get<double>(), 1e-12);
+  }
+}
+
+TEST_F(WalkerFigures, EveryKindRendersValidNonTrivialPngAndSvg) {
+  const std::vector<WalkerJobResults> jobs = both();
+  const std::vector<Figure> figures = walker_figures(jobs, 1.0);
+  ASSERT_EQ(figures.size(), walker_figure_kinds().size());
+  for (const Figure& f : figures) {
+    SCOPED_TRACE(f.name);
+    const std::vector<std::string> paths = write_figure(f, out_dir().string());
+    const testing::PngImage img = testing::inspect_png(paths[0]);
+    EXPECT_EQ(img.width, static_cast<int>(f.options.width));
+    EXPECT_EQ(img.height, static_cast<int>(f.options.height));
+    const double drawn = double(img.drawn_pixels) / (img.width * img.height);
+    EXPECT_GT(drawn, 0.03);
+    EXPECT_LT(drawn, 0.8);
+    const std::string svg = text_of(paths[1]);
+    EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    EXPECT_GT(svg.size(), 10000u);
+  }
+  // Charts: one curve per job with both jobs' colours in the SVG; torques: one curve per joint.
+  const LineChart& cot = std::get<LineChart>(figures[0].drawing);
+  ASSERT_EQ(cot.series.size(), 2u);
+  EXPECT_EQ(cot.series[0].label, "point feet");
+  EXPECT_EQ(cot.series[1].x.size(), 2u);
+  const std::string cot_svg = text_of(out_dir() / "cost_of_transport.svg");
+  EXPECT_NE(cot_svg.find(svg_colour(palette(0))), std::string::npos);
+  EXPECT_NE(cot_svg.find(svg_colour(palette(1))), std::string::npos);
+  EXPECT_EQ(std::get<LineChart>(figures[1].drawing).series.size(), 4u + 6u);
+  for (const char* name : {"cost_of_transport", "max_torques", "step_length", "floquet_multiplier"}) {
+    const testing::PngImage img = testing::inspect_png((out_dir() / (std::string(name) + ".png")).string());
+    EXPECT_GT(img.count(palette(0)), 150) << name;
+    EXPECT_GT(img.count(palette(1)), 150) << name;
+  }
+}
+
+TEST_F(WalkerFigures, StroboscopeShowsGroundContactPointsFeetAndClearance) {
+  const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(2, *hmt_))};
+  const Figure f = walker_figure("stroboscope", jobs, 1.2);
+  const Scene& s = std::get<Scene>(f.drawing);
+  ASSERT_TRUE(s.ground_z);
+  EXPECT_EQ(*s.ground_z, 0.0);
+  int contacts = 0, clearance = 0, closed = 0;
+  for (const Marker& m : s.markers) contacts += m.legend.rfind("rolling contact point C1", 0) == 0;
+  for (const Shape& sh : s.shapes) {
+    clearance += sh.legend.rfind("swing-foot lowest point", 0) == 0;
+    closed += sh.closed;
+  }
+  EXPECT_EQ(contacts, 13);     // 2 steps x 6 intervals + 1
+  EXPECT_EQ(clearance, 2);     // one path per step
+  EXPECT_EQ(closed, 2 * 13);   // both feet in every frame
+  // The contact point moves forwards along the sole during a step and the second step starts one
+  // step length further on.
+  EXPECT_LT(s.markers[0].x, s.markers[2 * 6].x);
+  // Its own folder: ctest runs the tests of this file in parallel.
+  const std::vector<std::string> paths = write_figure(f, (out_dir() / "stroboscope_test").string());
+  const testing::PngImage img = testing::inspect_png(paths[0]);
+  EXPECT_GT(img.count({0.84, 0.15, 0.16, 1}, 0.1), 100) << "contact points";
+  EXPECT_GT(img.count({0.17, 0.63, 0.17, 1}, 0.1), 100) << "clearance path";
+  EXPECT_GT(img.count({0.35, 0.25, 0.15, 1}, 0.1), 500) << "ground";
+}
+
+TEST_F(WalkerFigures, UnknownKindsAndPointFeetFootFigureAreRejected) {
+  const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(1, *point_feet_))};
+  EXPECT_THROW(walker_figure("pie", jobs), std::invalid_argument);
+  EXPECT_THROW(walker_figure("foot", jobs), std::invalid_argument);
+  EXPECT_EQ(walker_figures(jobs).size(), walker_figure_kinds().size() - 1);  // all but the foot
+  EXPECT_THROW(walker_job_results({{"id", 3}, {"scene", "walker"}, {"task", "foot_sweep"}}), std::invalid_argument);
+}
+
+TEST_F(WalkerFigures, ReportIsOneSelfContainedPageWithTableAndFigures) {
+  const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
+  EXPECT_NE(html.find("Job specification"), std::string::npos);
+  EXPECT_NE(html.find("P2-shoes-left-HMT"), std::string::npos);
+  EXPECT_NE(html.find("<td>1.200</td>"), std::string::npos);
+  std::size_t svgs = 0;
+  for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, walker_figure_kinds().size());
+  EXPECT_EQ(html.find("src=\""), std::string::npos);  // nothing external
+}
+
+TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
+  nlohmann::json result;
+  result["task"] = giant_swing::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
+  result["support_values_Nm"] = {0.0, 60.0, -40.0, 0.0};
+  const Scene s = giant_swing_stroboscope(giant_swing::appendix_b_gymnast(), result, 25.0);
+  ASSERT_GT(s.shapes.size(), 20u);  // at least 10 frames of two segments, plus two paths
+  ASSERT_EQ(s.markers.size(), 1u);
+  EXPECT_EQ(s.markers[0].legend, "high bar");
+  // The upper body is L1 long in every frame; the first frame is the handstand.
+  EXPECT_NEAR(std::hypot(s.shapes[0].points[1][0], s.shapes[0].points[1][1]), giant_swing::appendix_b_gymnast().L1, 1e-12);
+  EXPECT_NEAR(s.shapes[0].points[1][0], 0.0, 1e-12);
+  const fs::path png = out_dir() / "giant_swing_test.png";
+  const RenderOptions size = fitted_options(s, 800);
+  EXPECT_NEAR(size.width, 800 + s.legend_room, 100);  // a full circle of swings is about as wide as high
+  render(s, png.string(), size);
+  const testing::PngImage img = testing::inspect_png(png.string());
+  EXPECT_EQ(img.height, 800);
+  EXPECT_GT(img.count({0.12, 0.47, 0.71, 1}), 500) << "upper body";
+  EXPECT_GT(img.count({0.84, 0.37, 0.0, 1}), 500) << "legs";
+  EXPECT_THROW(giant_swing_stroboscope(giant_swing::appendix_b_gymnast(), {{"task", result["task"]}}),
+               std::invalid_argument);
+}
+
+// The command line on a database written through the store API (read-only, no server).
+TEST_F(WalkerFigures, CommandLinePlotsAndReportsFromADatabase) {
+  const fs::path dir = out_dir() / "cli";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string db = (dir / "results.db").string();
+  {
+    storage::ResultStore store(db);
+    for (const StoredJob* job : {point_feet_, hmt_}) {
+      const storage::SubmitOutcome s = store.submit("req-" + job->spec["name"].get<std::string>(), "walker", "sweep",
+                                                    job->spec.dump());
+      for (const storage::SolutionPoint& p : job->points) store.store_point(s.job_id, p);
+      store.finish(s.job_id, storage::JobState::done, "", 1.5, 0.0);
+    }
+  }
+  const std::string cli = std::string(CYCLOPT_CLI) + " --db " + db;
+  ASSERT_EQ(std::system((cli + " plot all --job 1 --job 2 --out " + (dir / "pictures").string() + " > " +
+                         (dir / "plot.txt").string()).c_str()),
+            0);
+  for (const char* name : {"cost_of_transport", "max_torques", "step_length", "floquet_multiplier", "stroboscope",
+                           "foot_shape"}) {
+    EXPECT_GT(testing::inspect_png((dir / "pictures" / (std::string(name) + ".png")).string()).drawn_pixels, 10000)
+        << name;
+    EXPECT_TRUE(fs::exists(dir / "pictures" / (std::string(name) + ".svg"))) << name;
+  }
+  EXPECT_NE(text_of(dir / "plot.txt").find("stroboscope.png"), std::string::npos);
+  ASSERT_EQ(std::system((cli + " report 2 --out " + (dir / "job2.html").string() + " > /dev/null").c_str()), 0);
+  EXPECT_NE(text_of(dir / "job2.html").find("<svg"), std::string::npos);
+  // Bad input: an unknown kind and a job that does not exist are rejected (exit 2), a plot
+  // without jobs is a usage error (exit 1).
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " plot pie --job 1 2> /dev/null").c_str())), 2);
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " report 9 2> /dev/null").c_str())), 2);
+  EXPECT_EQ(WEXITSTATUS(std::system((cli + " plot all 2> /dev/null").c_str())), 1);
+}
+
+}  // namespace
+}  // namespace cyclopt::plot
