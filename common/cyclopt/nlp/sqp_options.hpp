@@ -4,6 +4,7 @@
 // of Table 6.2 live in the generic SolverOptions (see seed_table_6_2_options()).
 
 #include "cyclopt/qp/active_set_solver.hpp"
+#include "cyclopt/qp/screened_solve.hpp"
 
 #include <Eigen/Core>
 
@@ -38,6 +39,9 @@ struct SqpOptions {
                                 const Eigen::VectorXd& inequality_multipliers)>
       lagrangian_hessian;
   qp::ActiveSetOptions qp;  // for the subproblems (6.7), (6.13), (6.14)
+  // The subproblems are solved on the inequalities near activity only (screened_solve.hpp; the
+  // result is the full subproblem's): a deviation in cost, not in iterates, from the seed.
+  qp::ScreeningOptions screening;
 };
 
 }  // namespace cyclopt::nlp

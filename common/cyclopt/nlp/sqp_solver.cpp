@@ -122,7 +122,7 @@ bool SqpRun::is_kkt_point() {
 
 // Step 3: the QP (6.7); penalties (6.9).
 std::optional<SearchDirection> SqpRun::search_direction() {
-  const qp::QpSolution qp = qp::solve_active_set(sqp_subproblem(here(), W_), sqp_.qp, working_set_);
+  const qp::QpSolution qp = qp::solve_screened(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
@@ -145,7 +145,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   // eq. (6.10): mu_k = max of the previous penalties (mu_1 initially). A previous maximum of 0
   // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
   double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
-  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp);
+  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp, sqp_.screening);
   // The LP only calibrates the penalty (steps 6/7) and certifies infeasibility (step 5). If it
   // hits the QP iteration limit (degenerate LPs with many slacks), its last point still bounds the
   // achievable decrease from below: use that and skip the certificate (a deviation from the seed).
@@ -164,7 +164,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   }
   qp::WorkingSet warm;
   for (int k = 0;; ++k) {
-    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, warm);
+    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, sqp_.screening, warm);
     if (relaxed.status != qp::QpStatus::optimal) {
       stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
       return std::nullopt;
