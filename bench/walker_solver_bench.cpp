@@ -4,7 +4,8 @@
 //
 // usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
-//   options (integer, number or string, recognised in that order).
+//   options (integer, number or string, recognised in that order); the word difference_hessian
+//   sets SqpOptions::difference_hessian.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -46,7 +47,11 @@ int main(int argc, char** argv) {
   nlp::SolverOptions so = nlp::seed_table_6_2_options();
   so.solver = nlp::parse_solver_kind(argv[3]);
   if (argc > 4) so.max_iterations = std::atoi(argv[4]);
-  for (int k = 5; k < argc; ++k) add_ipopt_option(so.ipopt, argv[k]);
+  for (int k = 5; k < argc; ++k)
+    if (std::string(argv[k]) == "difference_hessian")
+      so.sqp.difference_hessian = true;
+    else
+      add_ipopt_option(so.ipopt, argv[k]);
   const walker::GaitOptimum r = walker::optimise_gait(model, po, so);
   const nlp::SolverSummary& s = r.summary;
   std::printf("%s %s %.2f m/s %s: %s, %d it, %d f + %d J evaluations (%d failed), f %.10f (start %.6f), kkt %.2e, viol %.2e, "

@@ -34,7 +34,9 @@ struct SqpOptions {
   // (steps 9 and 12) gives up; 0.7^100 ~ 3e-16.
   int max_backtracking_steps = 100;
   // Optional Hessian of the Lagrangian (eq. (6.23)), e.g. by complex step or AD of the gradients:
-  // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25).
+  // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25), unless
+  // difference_hessian.
+  bool difference_hessian = false;  // W_1 from (6.24) on forward differences of the exact gradients (difference_hessian.hpp)
   std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,
                                 const Eigen::VectorXd& inequality_multipliers)>
       lagrangian_hessian;

@@ -3,6 +3,7 @@
 #include "cyclopt/nlp/active_set_projections.hpp"
 #include "cyclopt/nlp/cached_evaluator.hpp"
 #include "cyclopt/nlp/damped_bfgs.hpp"
+#include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/l1_merit.hpp"
 #include "cyclopt/nlp/sqp_subproblems.hpp"
@@ -236,9 +237,13 @@ void SqpRun::run(const VectorXd& x0) {
   for (Index i = 0; i < m_in_; ++i)
     if (current_.inequalities[i] >= -options_.constraint_tolerance) initially_active.push_back(static_cast<int>(i));
   multipliers_ = least_squares_multipliers(current_, active_at(x_, initially_active));
-  const bool identity_start = !sqp_.lagrangian_hessian;
-  W_ = identity_start ? MatrixXd::Identity(n_, n_)
-                      : clamped_hessian(sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality));  // (6.24)
+  std::optional<MatrixXd> hessian;  // of the Lagrangian (6.23)
+  if (sqp_.lagrangian_hessian)
+    hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
+  else if (sqp_.difference_hessian)
+    hessian = lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
+  const bool identity_start = !hessian;
+  W_ = identity_start ? MatrixXd::Identity(n_, n_) : clamped_hessian(*hessian);  // (6.24)
 
   for (int k = 1;; ++k) {
     if (is_kkt_point()) {  // step 2
