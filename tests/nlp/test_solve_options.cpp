@@ -124,6 +124,28 @@ TEST(SqpInitialHessian, DifferenceHessianMatchesTheAnalyticOne) {
   EXPECT_EQ(counts.jacobian_evaluations, 1 + 2);  // x and one forward point per variable
 }
 
+TEST(IpoptDifferenceHessian, ExactHessianModeReachesThePublishedOptima) {
+  for (const TestProblem& tp : hock_schittkowski_problems()) {
+    auto problem = tp.make();
+    SolverOptions o;
+    o.solver = SolverKind::ipopt;
+    o.ipopt.difference_hessian = true;
+    const SolverSummary s = solve(*problem, o, tp.x0);
+    ASSERT_TRUE(s.success()) << tp.name << ": " << s.message;
+    EXPECT_NEAR(s.objective, tp.f_star, 1e-6 * std::max(1.0, std::abs(tp.f_star))) << tp.name;
+  }
+}
+
+TEST(IpoptOptionPassthrough, SetsIpoptOptionsAndRejectsUnknownNames) {
+  auto problem = hock_schittkowski_problems()[11].make();  // HS71
+  SolverOptions o;
+  o.solver = SolverKind::ipopt;
+  o.ipopt.integer_options["max_iter"] = 3;  // overrides SolverOptions::max_iterations
+  EXPECT_EQ(solve(*problem, o, vec({1, 5, 5, 1})).termination, Termination::max_iterations);
+  o.ipopt.numeric_options["no_such_option"] = 1.0;
+  EXPECT_THROW(solve(*problem, o, vec({1, 5, 5, 1})), std::invalid_argument);
+}
+
 TEST(SqpInitialHessian, DifferenceHessianStartReachesThePublishedOptima) {
   // Not HS39: its Lagrangian Hessian is indefinite at the start, the clamp (6.24) leaves
   // curvature sqrt(eps) lambda_max in those directions and the first steps diverge.
