@@ -5,7 +5,7 @@
 // usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
 //   options (integer, number or string, recognised in that order); the word difference_hessian
-//   sets SqpOptions::difference_hessian and IpoptOptions::difference_hessian.
+//   sets SqpOptions::difference_hessian.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   if (argc > 4) so.max_iterations = std::atoi(argv[4]);
   for (int k = 5; k < argc; ++k)
     if (std::string(argv[k]) == "difference_hessian")
-      so.sqp.difference_hessian = so.ipopt.difference_hessian = true;
+      so.sqp.difference_hessian = true;
     else
       add_ipopt_option(so.ipopt, argv[k]);
   const walker::GaitOptimum r = walker::optimise_gait(model, po, so);

@@ -124,18 +124,6 @@ TEST(SqpInitialHessian, DifferenceHessianMatchesTheAnalyticOne) {
   EXPECT_EQ(counts.jacobian_evaluations, 1 + 2);  // x and one forward point per variable
 }
 
-TEST(IpoptDifferenceHessian, ExactHessianModeReachesThePublishedOptima) {
-  for (const TestProblem& tp : hock_schittkowski_problems()) {
-    auto problem = tp.make();
-    SolverOptions o;
-    o.solver = SolverKind::ipopt;
-    o.ipopt.difference_hessian = true;
-    const SolverSummary s = solve(*problem, o, tp.x0);
-    ASSERT_TRUE(s.success()) << tp.name << ": " << s.message;
-    EXPECT_NEAR(s.objective, tp.f_star, 1e-6 * std::max(1.0, std::abs(tp.f_star))) << tp.name;
-  }
-}
-
 TEST(IpoptOptionPassthrough, SetsIpoptOptionsAndRejectsUnknownNames) {
   auto problem = hock_schittkowski_problems()[11].make();  // HS71
   SolverOptions o;

@@ -12,13 +12,11 @@
 
 namespace cyclopt::nlp {
 
-// Hessian of objective_weight f + y_eq' c_eq + y_in' c_in (Ipopt's form; 1 for the SQP). `at` is
-// the evaluation with derivatives at x (pass a copy: the evaluator's cache is reused). Nothing if
-// some column has no evaluable point on either side.
+// `at` is the evaluation with derivatives at x (it is copied: the evaluator's cache is reused).
+// Nothing if some column has no evaluable point on either side.
 std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator& evaluator, const Eigen::VectorXd& x,
                                                                  const Evaluation& at,
                                                                  const Eigen::VectorXd& equality_multipliers,
-                                                                 const Eigen::VectorXd& inequality_multipliers,
-                                                                 double objective_weight = 1.0);
+                                                                 const Eigen::VectorXd& inequality_multipliers);
 
 }  // namespace cyclopt::nlp

@@ -1,8 +1,6 @@
 #pragma once
 // Ipopt-specific settings of the adapter (ipopt_solver.hpp). The Problem interface provides
-// first derivatives only, so the Hessian is Ipopt's limited-memory (L-BFGS) approximation, or
-// forward differences of the exact Lagrangian gradient (n evaluations with derivatives per
-// iteration, difference_hessian.hpp).
+// first derivatives only, so the Hessian is always Ipopt's limited-memory (L-BFGS) approximation.
 
 #include <map>
 #include <string>
@@ -12,9 +10,6 @@ namespace cyclopt::nlp {
 struct IpoptOptions {
   int limited_memory_max_history = 6;  // Ipopt's limited_memory_max_history; >= 1
   std::string mu_strategy = "monotone";  // Ipopt's mu_strategy: "monotone" or "adaptive"
-  // Exact-Hessian mode on the difference Hessian instead of L-BFGS: L-BFGS does not reach
-  // KKT 1e-5 on the walker (bench/results/walker_solvers.txt).
-  bool difference_hessian = false;
   // Any further Ipopt option by its Ipopt name (e.g. {"nlp_scaling_method", "none"},
   // {"bound_push", 1e-6}), applied after the adapter's own settings, so they override them.
   // An option Ipopt does not know, or a value outside its range, makes the solve throw

@@ -1,7 +1,6 @@
 #include "cyclopt/nlp/ipopt_solver.hpp"
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
-#include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
 
 #include <IpIpoptApplication.hpp>
@@ -11,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -62,7 +60,7 @@ class ProblemTnlp : public Ipopt::TNLP {
     n = n_;
     m = m_eq_ + m_in_;
     nnz_jac_g = n * m;
-    nnz_h_lag = options_.ipopt.difference_hessian ? n * (n + 1) / 2 : 0;
+    nnz_h_lag = 0;
     index_style = C_STYLE;
     return true;
   }
@@ -156,24 +154,8 @@ class ProblemTnlp : public Ipopt::TNLP {
     summary_.bound_multipliers = Eigen::Map<const Eigen::VectorXd>(z_U, n) - Eigen::Map<const Eigen::VectorXd>(z_L, n);
   }
 
-  // Lower triangle, row by row: entry k of row i is (i, j) for j <= i.
-  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda, bool, Index, Index* iRow,
-              Index* jCol, Number* values) override {
-    if (!options_.ipopt.difference_hessian) return false;
-    if (values == nullptr) {
-      for (Index i = 0, k = 0; i < n; ++i)
-        for (Index j = 0; j <= i; ++j, ++k) iRow[k] = i, jCol[k] = j;
-      return true;
-    }
-    if (!evaluate(n, x, true)) return false;
-    const Evaluation at = evaluator_.evaluation();
-    const Eigen::Map<const Eigen::VectorXd> y(lambda, m);
-    const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
-        evaluator_, Eigen::Map<const Eigen::VectorXd>(x, n), at, y.head(m_eq_), y.tail(m_in_), obj_factor);
-    if (!H) return false;
-    for (Index i = 0, k = 0; i < n; ++i)
-      for (Index j = 0; j <= i; ++j, ++k) values[k] = (*H)(i, j);
-    return true;
+  bool eval_h(Index, const Number*, bool, Number, Index, const Number*, bool, Index, Index*, Index*, Number*) override {
+    return false;  // limited-memory Hessian only
   }
 
  private:
@@ -237,7 +219,7 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
   Ipopt::OptionsList& o = *app->Options();
   o.SetIntegerValue("print_level", options.print_level);
   if (options.print_level == 0) o.SetStringValue("sb", "yes");  // no banner
-  o.SetStringValue("hessian_approximation", options.ipopt.difference_hessian ? "exact" : "limited-memory");
+  o.SetStringValue("hessian_approximation", "limited-memory");
   o.SetIntegerValue("limited_memory_max_history", options.ipopt.limited_memory_max_history);
   o.SetStringValue("mu_strategy", options.ipopt.mu_strategy);
   o.SetIntegerValue("max_iter", options.max_iterations);
