@@ -68,11 +68,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
     job.seed = static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1));
     job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
   }
-  // The seed's SQP by default, with W_1 of (6.24) from the difference Hessian: from W_1 = I it
-  // fails on the HM P1 walker at 1.3 m/s (bench/results/walker_solvers.txt).
-  nlp::SolverOptions walker_default = nlp::seed_table_6_2_options();
-  walker_default.sqp.difference_hessian = true;
-  job.solver = solver_options_from_spec(spec, walker_default);
+  job.solver = solver_options_from_spec(spec, nlp::seed_table_6_2_options());  // the seed's SQP by default
   return job;
 }
 
