@@ -157,7 +157,7 @@ TEST(L1RelaxedSubproblem, SlacksOnDemandGiveTheFullProgramsOptimum) {
     const double mu = 0.5 + std::abs(normal(rng));
     const VectorXd x = VectorXd::Zero(n), free = VectorXd::Constant(n, std::numeric_limits<double>::infinity());
     const VectorXd lower = -free;
-    const cyclopt::qp::QpSolution restricted = solve_l1_relaxed_subproblem({e, x, lower, free}, W, mu, {}, {});
+    const cyclopt::qp::QpSolution restricted = solve_l1_relaxed_subproblem({e, x, lower, free}, W, mu, {}, {}, {});
     const cyclopt::qp::QpSolution full = cyclopt::qp::solve_active_set(full_relaxed_program(e, W, mu));
     ASSERT_EQ(restricted.status, cyclopt::qp::QpStatus::optimal);
     ASSERT_EQ(full.status, cyclopt::qp::QpStatus::optimal);

@@ -86,19 +86,19 @@ class ProblemTnlp : public Ipopt::TNLP {
   }
 
   bool eval_f(Index n, const Number* x, bool, Number& obj_value) override {
-    if (!evaluate(n, x)) return false;
+    if (!evaluate(n, x, false)) return false;
     obj_value = evaluator_.evaluation().objective;
     return true;
   }
 
   bool eval_grad_f(Index n, const Number* x, bool, Number* grad_f) override {
-    if (!evaluate(n, x)) return false;
+    if (!evaluate(n, x, true)) return false;
     Eigen::Map<Eigen::VectorXd>(grad_f, n) = evaluator_.evaluation().gradient;
     return true;
   }
 
   bool eval_g(Index n, const Number* x, bool, Index m, Number* g) override {
-    if (!evaluate(n, x)) return false;
+    if (!evaluate(n, x, false)) return false;
     Eigen::Map<Eigen::VectorXd> out(g, m);
     out.head(m_eq_) = evaluator_.evaluation().equalities;
     out.tail(m_in_) = evaluator_.evaluation().inequalities;
@@ -114,7 +114,7 @@ class ProblemTnlp : public Ipopt::TNLP {
       }
       return true;
     }
-    if (!evaluate(n, x)) return false;
+    if (!evaluate(n, x, true)) return false;
     using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     Eigen::Map<RowMajor> jac(values, m, n);
     jac.topRows(m_eq_) = evaluator_.evaluation().equality_jacobian;
@@ -159,8 +159,10 @@ class ProblemTnlp : public Ipopt::TNLP {
   }
 
  private:
-  bool evaluate(Index n, const Number* x) {
-    return evaluator_.evaluate(Eigen::Map<const Eigen::VectorXd>(x, n), true).ok;
+  // Values only for eval_f/eval_g: line-search trial points that Ipopt rejects never pay for
+  // the Jacobian (18 ms against 0.3 ms for the walker at P = 200).
+  bool evaluate(Index n, const Number* x, bool with_derivatives) {
+    return evaluator_.evaluate(Eigen::Map<const Eigen::VectorXd>(x, n), with_derivatives).ok;
   }
 
   Problem& problem_;
@@ -186,6 +188,20 @@ Termination termination_of(Ipopt::ApplicationReturnStatus status, ProblemTnlp::S
     case Ipopt::Invalid_Number_Detected: return Termination::evaluation_failure;
     default: return Termination::numerical_failure;
   }
+}
+
+void reject_option(const std::string& name) {
+  throw std::invalid_argument("SolverOptions.ipopt options: Ipopt rejects option '" + name +
+                              "' (unknown name, wrong type or value outside its range)");
+}
+
+void apply_passthrough_options(const IpoptOptions& ipopt, Ipopt::OptionsList& o) {
+  for (const auto& [name, value] : ipopt.string_options)
+    if (!o.SetStringValue(name, value)) reject_option(name);
+  for (const auto& [name, value] : ipopt.numeric_options)
+    if (!o.SetNumericValue(name, value)) reject_option(name);
+  for (const auto& [name, value] : ipopt.integer_options)
+    if (!o.SetIntegerValue(name, value)) reject_option(name);
 }
 
 }  // namespace
@@ -215,6 +231,7 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
   // leaves violations and objective errors of that size; keep it below the requested tolerance.
   o.SetNumericValue("bound_relax_factor", std::min(1e-8, 0.1 * options.constraint_tolerance));
   if (std::isfinite(options.max_wall_seconds)) o.SetNumericValue("max_cpu_time", options.max_wall_seconds);
+  apply_passthrough_options(options.ipopt, o);
   if (app->Initialize("") != Ipopt::Solve_Succeeded) {
     summary.message = "Ipopt initialisation failed";
     return summary;

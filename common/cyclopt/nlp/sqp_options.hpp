@@ -4,6 +4,7 @@
 // of Table 6.2 live in the generic SolverOptions (see seed_table_6_2_options()).
 
 #include "cyclopt/qp/active_set_solver.hpp"
+#include "cyclopt/qp/screened_solve.hpp"
 
 #include <Eigen/Core>
 
@@ -33,11 +34,16 @@ struct SqpOptions {
   // (steps 9 and 12) gives up; 0.7^100 ~ 3e-16.
   int max_backtracking_steps = 100;
   // Optional Hessian of the Lagrangian (eq. (6.23)), e.g. by complex step or AD of the gradients:
-  // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25).
+  // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25), unless
+  // difference_hessian.
+  bool difference_hessian = false;  // W_1 from (6.24) on forward differences of the exact gradients (difference_hessian.hpp)
   std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,
                                 const Eigen::VectorXd& inequality_multipliers)>
       lagrangian_hessian;
   qp::ActiveSetOptions qp;  // for the subproblems (6.7), (6.13), (6.14)
+  // The subproblems are solved on the inequalities near activity only (screened_solve.hpp; the
+  // result is the full subproblem's): a deviation in cost, not in iterates, from the seed.
+  qp::ScreeningOptions screening;
 };
 
 }  // namespace cyclopt::nlp

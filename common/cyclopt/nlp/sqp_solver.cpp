@@ -3,6 +3,7 @@
 #include "cyclopt/nlp/active_set_projections.hpp"
 #include "cyclopt/nlp/cached_evaluator.hpp"
 #include "cyclopt/nlp/damped_bfgs.hpp"
+#include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/l1_merit.hpp"
 #include "cyclopt/nlp/sqp_subproblems.hpp"
@@ -122,7 +123,7 @@ bool SqpRun::is_kkt_point() {
 
 // Step 3: the QP (6.7); penalties (6.9).
 std::optional<SearchDirection> SqpRun::search_direction() {
-  const qp::QpSolution qp = qp::solve_active_set(sqp_subproblem(here(), W_), sqp_.qp, working_set_);
+  const qp::QpSolution qp = qp::solve_screened(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
@@ -145,7 +146,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   // eq. (6.10): mu_k = max of the previous penalties (mu_1 initially). A previous maximum of 0
   // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
   double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
-  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp);
+  const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp, sqp_.screening);
   // The LP only calibrates the penalty (steps 6/7) and certifies infeasibility (step 5). If it
   // hits the QP iteration limit (degenerate LPs with many slacks), its last point still bounds the
   // achievable decrease from below: use that and skip the certificate (a deviation from the seed).
@@ -164,7 +165,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   }
   qp::WorkingSet warm;
   for (int k = 0;; ++k) {
-    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, warm);
+    const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, sqp_.screening, warm);
     if (relaxed.status != qp::QpStatus::optimal) {
       stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
       return std::nullopt;
@@ -236,9 +237,13 @@ void SqpRun::run(const VectorXd& x0) {
   for (Index i = 0; i < m_in_; ++i)
     if (current_.inequalities[i] >= -options_.constraint_tolerance) initially_active.push_back(static_cast<int>(i));
   multipliers_ = least_squares_multipliers(current_, active_at(x_, initially_active));
-  const bool identity_start = !sqp_.lagrangian_hessian;
-  W_ = identity_start ? MatrixXd::Identity(n_, n_)
-                      : clamped_hessian(sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality));  // (6.24)
+  std::optional<MatrixXd> hessian;  // of the Lagrangian (6.23)
+  if (sqp_.lagrangian_hessian)
+    hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
+  else if (sqp_.difference_hessian)
+    hessian = lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
+  const bool identity_start = !hessian;
+  W_ = identity_start ? MatrixXd::Identity(n_, n_) : clamped_hessian(*hessian);  // (6.24)
 
   for (int k = 1;; ++k) {
     if (is_kkt_point()) {  // step 2

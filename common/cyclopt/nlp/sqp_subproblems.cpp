@@ -46,7 +46,8 @@ qp::QuadraticProgram elastic_program(const LinearisationPoint& at, const MatrixX
 // multiplier <= the weight, i.e. the solution is a KKT point of the program with all slacks.
 qp::QpSolution solve_elastic(const LinearisationPoint& at, const MatrixXd& d_hessian, const VectorXd& d_gradient,
                              double slack_weight, const VectorXd& d_lower, const VectorXd& d_upper,
-                             const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start) {
+                             const qp::ActiveSetOptions& options, const qp::ScreeningOptions& screening,
+                             const qp::WorkingSet& warm_start) {
   const Evaluation& e = at.evaluation;
   const Index m_in = e.inequalities.size();
   const int d_size = static_cast<int>(at.x.size());
@@ -61,8 +62,8 @@ qp::QpSolution solve_elastic(const LinearisationPoint& at, const MatrixXd& d_hes
   for (int j = d_size; j < d_size + 2 * static_cast<int>(e.equalities.size()) + static_cast<int>(elastic.size()); ++j)
     warm.lower_bounds.push_back(j);
   for (;;) {
-    const qp::QpSolution solution =
-        qp::solve_active_set(elastic_program(at, d_hessian, d_gradient, slack_weight, d_lower, d_upper, elastic), options, warm);
+    const qp::QpSolution solution = qp::solve_screened(
+        elastic_program(at, d_hessian, d_gradient, slack_weight, d_lower, d_upper, elastic), options, warm, screening);
     if (solution.status != qp::QpStatus::optimal) return solution;
     bool grown = false;
     warm = solution.working_set;  // new slacks are appended (at 0): earlier indices stay valid
@@ -95,14 +96,16 @@ qp::QuadraticProgram sqp_subproblem(const LinearisationPoint& at, const MatrixXd
 }
 
 qp::QpSolution solve_l1_relaxed_subproblem(const LinearisationPoint& at, const MatrixXd& W, double mu,
-                                          const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start) {
-  return solve_elastic(at, W, at.evaluation.gradient, mu, at.lower - at.x, at.upper - at.x, options, warm_start);
+                                          const qp::ActiveSetOptions& options, const qp::ScreeningOptions& screening,
+                                          const qp::WorkingSet& warm_start) {
+  return solve_elastic(at, W, at.evaluation.gradient, mu, at.lower - at.x, at.upper - at.x, options, screening, warm_start);
 }
 
-qp::QpSolution solve_l1_feasibility_lp(const LinearisationPoint& at, double trust_radius, const qp::ActiveSetOptions& options) {
+qp::QpSolution solve_l1_feasibility_lp(const LinearisationPoint& at, double trust_radius, const qp::ActiveSetOptions& options,
+                                      const qp::ScreeningOptions& screening) {
   const Index n = at.x.size();
   return solve_elastic(at, MatrixXd::Zero(n, n), VectorXd::Zero(n), 1.0, (at.lower - at.x).cwiseMax(-trust_radius),
-                       (at.upper - at.x).cwiseMin(trust_radius), options, {});
+                       (at.upper - at.x).cwiseMin(trust_radius), options, screening, {});
 }
 
 }  // namespace cyclopt::nlp

@@ -6,6 +6,7 @@
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/qp/active_set_solver.hpp"
 #include "cyclopt/qp/quadratic_program.hpp"
+#include "cyclopt/qp/screened_solve.hpp"
 
 #include <Eigen/Core>
 
@@ -32,10 +33,12 @@ qp::QuadraticProgram sqp_subproblem(const LinearisationPoint& at, const Eigen::M
 // eq. (6.13), variables (d, r, s, t): min grad f d + 1/2 d'Wd + mu (sum(r + s) + sum t)
 // s.t. J_g d + c_g = r - s, J_u d + c_u <= t, r, s, t >= 0. Semidefinite (no curvature in r, s, t).
 qp::QpSolution solve_l1_relaxed_subproblem(const LinearisationPoint& at, const Eigen::MatrixXd& W, double mu,
-                                          const qp::ActiveSetOptions& options, const qp::WorkingSet& warm_start);
+                                          const qp::ActiveSetOptions& options, const qp::ScreeningOptions& screening,
+                                          const qp::WorkingSet& warm_start);
 
 // eq. (6.14), variables (d, r, s, t): min sum(r + s) + sum t s.t. the constraints of (6.13) and
 // |d|_inf <= trust_radius. An LP (H = 0).
-qp::QpSolution solve_l1_feasibility_lp(const LinearisationPoint& at, double trust_radius, const qp::ActiveSetOptions& options);
+qp::QpSolution solve_l1_feasibility_lp(const LinearisationPoint& at, double trust_radius, const qp::ActiveSetOptions& options,
+                                      const qp::ScreeningOptions& screening);
 
 }  // namespace cyclopt::nlp

@@ -1,0 +1,62 @@
+// One walker gait optimisation from the automatic starting gait, per solver, with Ipopt options
+// given on the command line: what the Ipopt settings for the walker (ipopt_solver.hpp) were
+// measured with. Prints termination, iterations, evaluations, objective, KKT error and time.
+//
+// usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]
+//   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
+//   options (integer, number or string, recognised in that order); the word difference_hessian
+//   sets SqpOptions::difference_hessian.
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/walker/gait_optimisation.hpp"
+#include "machine_info.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+using namespace cyclopt;
+
+namespace {
+
+void add_ipopt_option(nlp::IpoptOptions& o, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  const std::string name = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+  char* end = nullptr;
+  const long integer = std::strtol(value.c_str(), &end, 10);
+  if (*end == '\0') {
+    o.integer_options[name] = static_cast<int>(integer);
+    return;
+  }
+  const double number = std::strtod(value.c_str(), &end);
+  if (*end == '\0')
+    o.numeric_options[name] = number;
+  else
+    o.string_options[name] = value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]\n");
+    return 1;
+  }
+  const std::string foot_name = argv[1];
+  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
+  const walker::GaitProblemOptions po{walker::Objective::mechanical, std::atof(argv[2]), walker::Quadrature::trapezoid, {}};
+  nlp::SolverOptions so = nlp::seed_table_6_2_options();
+  so.solver = nlp::parse_solver_kind(argv[3]);
+  if (argc > 4) so.max_iterations = std::atoi(argv[4]);
+  for (int k = 5; k < argc; ++k)
+    if (std::string(argv[k]) == "difference_hessian")
+      so.sqp.difference_hessian = true;
+    else
+      add_ipopt_option(so.ipopt, argv[k]);
+  const walker::GaitOptimum r = walker::optimise_gait(model, po, so);
+  const nlp::SolverSummary& s = r.summary;
+  std::printf("%s %s %.2f m/s %s: %s, %d it, %d f + %d J evaluations (%d failed), f %.10f (start %.6f), kkt %.2e, viol %.2e, "
+              "%.1f s  [%s]\n",
+              cyclopt::bench::machine_line().c_str(), foot_name.c_str(), po.speed, argv[3], nlp::to_string(s.termination),
+              s.iterations, s.function_evaluations, s.jacobian_evaluations, s.failed_evaluations, s.objective,
+              r.start_objective, s.kkt_error, s.constraint_violation, s.wall_seconds, s.message.c_str());
+}

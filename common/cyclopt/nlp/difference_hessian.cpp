@@ -1,0 +1,34 @@
+#include "cyclopt/nlp/difference_hessian.hpp"
+
+#include "cyclopt/nlp/kkt_measures.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace cyclopt::nlp {
+
+std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator& evaluator, const Eigen::VectorXd& x,
+                                                                 const Evaluation& at,
+                                                                 const Eigen::VectorXd& equality_multipliers,
+                                                                 const Eigen::VectorXd& inequality_multipliers) {
+  const Eigen::Index n = x.size();
+  const Eigen::VectorXd base = lagrangian_gradient(at, equality_multipliers, inequality_multipliers, {});
+  Eigen::MatrixXd H(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double h = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[j]));
+    bool done = false;
+    for (double side : {1.0, -1.0}) {
+      Eigen::VectorXd xh = x;
+      xh[j] += side * h;
+      if (!evaluator.evaluate(xh, true).ok) continue;
+      H.col(j) = (lagrangian_gradient(evaluator.evaluation(), equality_multipliers, inequality_multipliers, {}) - base) /
+                 (side * h);
+      done = true;
+      break;
+    }
+    if (!done) return std::nullopt;
+  }
+  return Eigen::MatrixXd(0.5 * (H + H.transpose()));
+}
+
+}  // namespace cyclopt::nlp
