@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
 FOOT=${FOOT:-P2-shoes-left-HMT}
-SPEEDS=${SPEEDS:-0.5:0.25:1.5}
+SPEEDS=${SPEEDS:-1.0:0.3:1.3}
 OUT=out/service
 PICTURES=out/pictures
 if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
