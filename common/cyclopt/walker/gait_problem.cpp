@@ -2,6 +2,7 @@
 
 
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace cyclopt::walker {
@@ -95,8 +96,10 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
   if (z.size() != num_variables())
     throw std::invalid_argument("z: " + std::to_string(z.size()) + " entries, expected " + std::to_string(num_variables()));
   const Eigen::VectorXd x = gait_parameters(z);
-  const GaitEvaluator local = free_indices_.empty() ? GaitEvaluator(model_) : GaitEvaluator(model_at(z));
-  const GaitEvaluator& ev = free_indices_.empty() ? evaluator_ : local;
+  // With free parameters the model (and its Bezier basis) changes with z; otherwise reuse evaluator_.
+  std::optional<GaitEvaluator> local;
+  if (!free_indices_.empty()) local.emplace(model_at(z));
+  const GaitEvaluator& ev = local ? *local : evaluator_;
   GaitEvaluation e;
   if (with_derivatives) {
     e = ev.evaluate_with_derivatives(x, gait_options(false), free_indices_);
