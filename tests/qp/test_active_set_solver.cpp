@@ -2,6 +2,7 @@
 // semidefinite and unbounded ones) and KKT checks on randomized QPs.
 #include "cyclopt/qp/active_set_solver.hpp"
 #include "qp_kkt.hpp"
+#include "random_qp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,19 +21,12 @@ using cyclopt::qp::QpStatus;
 using cyclopt::qp::QuadraticProgram;
 using cyclopt::qp::solve_active_set;
 using cyclopt::qp::testing::expect_kkt;
+using cyclopt::qp::testing::random_qp;
+using cyclopt::qp::testing::unconstrained;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-QuadraticProgram unconstrained(const MatrixXd& H, const VectorXd& g) {
-  QuadraticProgram qp;
-  qp.hessian = H;
-  qp.gradient = g;
-  qp.equality_matrix = MatrixXd(0, g.size());
-  qp.inequality_matrix = MatrixXd(0, g.size());
-  return qp;
-}
 
 // Nocedal & Wright, Example 16.4: solution (1.4, 1.7), only the first constraint active (y = 0.8).
 QuadraticProgram nocedal_wright_example_16_4() {
@@ -167,37 +161,6 @@ TEST(ActiveSetSolver, RejectsBadInputNamingTheField) {
   cyclopt::qp::WorkingSet ws;
   ws.inequalities = {3};
   EXPECT_THROW(solve_active_set(unconstrained(MatrixXd::Identity(2, 2), VectorXd::Zero(2)), {}, ws), std::invalid_argument);
-}
-
-// A random feasible QP: a known feasible point x0 makes some inequalities and bounds exactly
-// active (degenerate), H has random rank (semidefinite when rank < n; then all bounds are finite).
-QuadraticProgram random_qp(std::mt19937_64& rng, bool* semidefinite) {
-  std::uniform_int_distribution<int> size(1, 10);
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const int n = size(rng);
-  const int rank = std::uniform_int_distribution<int>(0, n)(rng);
-  *semidefinite = rank < n;
-  const int m_eq = std::uniform_int_distribution<int>(0, n / 2)(rng);
-  const int m_in = std::uniform_int_distribution<int>(0, 2 * n)(rng);
-  MatrixXd F = MatrixXd::NullaryExpr(rank, n, [&] { return normal(rng); });
-  QuadraticProgram qp = unconstrained(F.transpose() * F, VectorXd::NullaryExpr(n, [&] { return 3.0 * normal(rng); }));
-  const VectorXd x0 = VectorXd::NullaryExpr(n, [&] { return normal(rng); });
-  qp.equality_matrix = MatrixXd::NullaryExpr(m_eq, n, [&] { return normal(rng); });
-  if (m_eq > 1 && uniform(rng) < 0.3) qp.equality_matrix.row(m_eq - 1) = 2.0 * qp.equality_matrix.row(0);  // redundant row
-  qp.equality_rhs = qp.equality_matrix * x0;
-  qp.inequality_matrix = MatrixXd::NullaryExpr(m_in, n, [&] { return normal(rng); });
-  qp.inequality_rhs = qp.inequality_matrix * x0;
-  for (int i = 0; i < m_in; ++i)
-    if (uniform(rng) < 0.6) qp.inequality_rhs[i] += uniform(rng);
-  qp.lower_bounds = x0 - VectorXd::NullaryExpr(n, [&] { return uniform(rng) < 0.2 ? 0.0 : 2.0 * uniform(rng); });
-  qp.upper_bounds = x0 + VectorXd::NullaryExpr(n, [&] { return uniform(rng) < 0.2 ? 0.0 : 2.0 * uniform(rng); });
-  if (!*semidefinite)
-    for (int i = 0; i < n; ++i) {
-      if (uniform(rng) < 0.4) qp.lower_bounds[i] = -kInf;
-      if (uniform(rng) < 0.4) qp.upper_bounds[i] = kInf;
-    }
-  return qp;
 }
 
 TEST(ActiveSetSolver, RandomQpsSatisfyKktConditions) {

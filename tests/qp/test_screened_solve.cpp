@@ -3,6 +3,7 @@
 // 10 units, clusters of nearly parallel rows as on a fine phase grid).
 #include "cyclopt/qp/screened_solve.hpp"
 #include "qp_kkt.hpp"
+#include "random_qp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,35 +21,9 @@ using cyclopt::qp::ScreeningOptions;
 using cyclopt::qp::solve_active_set;
 using cyclopt::qp::solve_screened;
 using cyclopt::qp::testing::expect_kkt;
+using cyclopt::qp::testing::many_row_qp;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-// n variables, clusters of 10 nearly parallel rows with right-hand sides spread over [0, 10]:
-// rows of (6.7) for one constraint kind on neighbouring grid points. Unconstrained minimiser far
-// outside, so several rows - some initially screened out - are active at the optimum.
-QuadraticProgram many_row_qp(std::mt19937_64& rng, int n, int clusters) {
-  std::normal_distribution<double> normal;
-  std::uniform_real_distribution<double> uniform(0.0, 10.0);
-  QuadraticProgram qp;
-  const MatrixXd R = MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
-  qp.hessian = R.transpose() * R + 0.1 * MatrixXd::Identity(n, n);
-  qp.gradient = 20.0 * VectorXd::NullaryExpr(n, [&] { return normal(rng); });
-  qp.equality_matrix = MatrixXd::NullaryExpr(1, n, [&] { return normal(rng); });
-  qp.equality_rhs = VectorXd::Zero(1);
-  qp.inequality_matrix.resize(10 * clusters, n);
-  qp.inequality_rhs.resize(10 * clusters);
-  for (int c = 0; c < clusters; ++c) {
-    const VectorXd a = VectorXd::NullaryExpr(n, [&] { return normal(rng); }).normalized();
-    const double b = uniform(rng);
-    for (int k = 0; k < 10; ++k) {
-      qp.inequality_matrix.row(10 * c + k) = (a + 1e-3 * VectorXd::NullaryExpr(n, [&] { return normal(rng); })).transpose();
-      qp.inequality_rhs[10 * c + k] = b + 1e-4 * k;
-    }
-  }
-  qp.lower_bounds = VectorXd::Constant(n, -3.0);
-  qp.upper_bounds = VectorXd::Constant(n, 3.0);
-  return qp;
-}
 
 TEST(ScreenedSolve, SameSolutionAsTheFullQp) {
   std::mt19937_64 rng(4);

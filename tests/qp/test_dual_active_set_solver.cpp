@@ -1,0 +1,137 @@
+// Goldfarb-Idnani dual active-set solver (dual_active_set_solver.hpp): the same solutions as the
+// primal active-set solver on strictly convex QPs (random, degenerate, with redundant equalities,
+// walker-like many-row QPs), infeasibility detection, and the dispatch of solve_convex.
+#include "cyclopt/qp/convex_solve.hpp"
+#include "cyclopt/qp/dual_active_set_solver.hpp"
+#include "qp_kkt.hpp"
+#include "random_qp.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+namespace {
+
+using cyclopt::qp::is_strictly_convex;
+using cyclopt::qp::QpSolution;
+using cyclopt::qp::QpStatus;
+using cyclopt::qp::QuadraticProgram;
+using cyclopt::qp::solve_active_set;
+using cyclopt::qp::solve_convex;
+using cyclopt::qp::solve_dual_active_set;
+using cyclopt::qp::solve_screened;
+using cyclopt::qp::testing::expect_kkt;
+using cyclopt::qp::testing::many_row_qp;
+using cyclopt::qp::testing::random_qp;
+using cyclopt::qp::testing::unconstrained;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+TEST(DualActiveSetSolver, NocedalWrightExample16_4) {
+  QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd((VectorXd(2) << -2, -5).finished()));
+  qp.inequality_matrix = (MatrixXd(3, 2) << -1, 2, 1, 2, 1, -2).finished();
+  qp.inequality_rhs = (VectorXd(3) << 2, 6, 2).finished();
+  qp.lower_bounds = VectorXd::Zero(2);
+  const QpSolution s = solve_dual_active_set(qp);
+  expect_kkt(qp, s, 1e-12);
+  EXPECT_NEAR(s.x[0], 1.4, 1e-12);
+  EXPECT_NEAR(s.x[1], 1.7, 1e-12);
+  EXPECT_NEAR(s.inequality_multipliers[0], 0.8, 1e-12);
+  EXPECT_EQ(s.working_set.inequalities, std::vector<int>{0});
+}
+
+// Four constraints active at the origin in 2-D (two bounds, two redundant rows): the dependent
+// ones never enter the working set.
+TEST(DualActiveSetSolver, DegenerateVertexWithRedundantActiveConstraints) {
+  QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd::Constant(2, 2.0));
+  qp.inequality_matrix = (MatrixXd(3, 2) << -1, -1, -1, -2, -2, -2).finished();
+  qp.inequality_rhs = VectorXd::Zero(3);
+  qp.lower_bounds = VectorXd::Zero(2);
+  const QpSolution s = solve_dual_active_set(qp);
+  expect_kkt(qp, s, 1e-12);
+  EXPECT_LE(s.x.norm(), 1e-12);
+  EXPECT_LE(s.working_set.inequalities.size() + s.working_set.lower_bounds.size(), 2u);
+}
+
+TEST(DualActiveSetSolver, RedundantAndContradictoryEqualities) {
+  QuadraticProgram qp = unconstrained(MatrixXd::Identity(2, 2), VectorXd::Zero(2));
+  qp.equality_matrix = (MatrixXd(3, 2) << 1, 1, 2, 2, -1, -1).finished();
+  qp.equality_rhs = (VectorXd(3) << 1, 2, -1).finished();
+  const QpSolution s = solve_dual_active_set(qp);
+  expect_kkt(qp, s, 1e-12);
+  EXPECT_NEAR(s.x[0], 0.5, 1e-12);
+  EXPECT_NEAR(s.x[1], 0.5, 1e-12);
+  qp.equality_rhs[1] = 3.0;
+  EXPECT_EQ(solve_dual_active_set(qp).status, QpStatus::infeasible);
+}
+
+TEST(DualActiveSetSolver, RejectsSemidefiniteHessianAndSolveConvexFallsBack) {
+  // min 1/2 x1^2 - x2 s.t. x2 <= 3: zero curvature in x2.
+  QuadraticProgram qp = unconstrained((MatrixXd(2, 2) << 1, 0, 0, 0).finished(), (VectorXd(2) << 0.5, -1).finished());
+  qp.upper_bounds = (VectorXd(2) << std::numeric_limits<double>::infinity(), 3).finished();
+  EXPECT_FALSE(is_strictly_convex(qp.hessian, 1e-10));
+  EXPECT_THROW(solve_dual_active_set(qp), std::invalid_argument);
+  const QpSolution s = solve_convex(qp, {}, {}, {});
+  expect_kkt(qp, s, 1e-12);
+  EXPECT_NEAR(s.x[1], 3.0, 1e-12);
+}
+
+// Strictly convex random QPs (those of random_qp with full-rank H): same optimum as the primal
+// method; infeasible ones (a row and its contradiction appended) detected.
+TEST(DualActiveSetSolver, RandomQpsAgreeWithThePrimalMethod) {
+  std::mt19937_64 rng(20261201);
+  int solved = 0, infeasible = 0, dual_iterations = 0, primal_iterations = 0;
+  while (solved < 400) {
+    bool semidefinite = false;
+    QuadraticProgram qp = random_qp(rng, &semidefinite);
+    if (semidefinite || !is_strictly_convex(qp.hessian, 1e-10)) continue;
+    SCOPED_TRACE("random QP " + std::to_string(solved));
+    const QpSolution dual = solve_dual_active_set(qp), primal = solve_active_set(qp);
+    const double scale = 1.0 + qp.gradient.lpNorm<Eigen::Infinity>() + qp.hessian.lpNorm<Eigen::Infinity>();
+    expect_kkt(qp, dual, 1e-8 * scale);
+    ASSERT_EQ(primal.status, QpStatus::optimal);
+    EXPECT_LE((dual.x - primal.x).norm(), 1e-7 * (1.0 + primal.x.norm()));
+    dual_iterations += dual.iterations, primal_iterations += primal.iterations, ++solved;
+    const Eigen::Index n = qp.num_variables(), m = qp.inequality_matrix.rows();
+    const VectorXd a = VectorXd::Random(n) + VectorXd::Constant(n, 2.0);
+    qp.inequality_matrix.conservativeResize(m + 2, n);
+    qp.inequality_rhs.conservativeResize(m + 2);
+    qp.inequality_matrix.row(m) = a.transpose();
+    qp.inequality_matrix.row(m + 1) = -a.transpose();
+    qp.inequality_rhs[m] = 0.0;
+    qp.inequality_rhs[m + 1] = -1.0;
+    infeasible += solve_dual_active_set(qp).status == QpStatus::infeasible;
+  }
+  EXPECT_EQ(infeasible, solved);
+  std::printf("strictly convex random QPs: %d, dual iterations %d, primal iterations %d\n", solved, dual_iterations,
+              primal_iterations);
+}
+
+// Walker-like QPs (1200 rows in clusters of nearly parallel rows, 30 variables): the screened
+// primal solution, and the time of both.
+TEST(DualActiveSetSolver, ManyRowQpsMatchTheScreenedPrimalSolution) {
+  std::mt19937_64 rng(5);
+  double dual_seconds = 0.0, primal_seconds = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    SCOPED_TRACE("QP " + std::to_string(k));
+    const QuadraticProgram qp = many_row_qp(rng, 30, 120);
+    const auto t0 = std::chrono::steady_clock::now();
+    const QpSolution dual = solve_dual_active_set(qp);
+    const auto t1 = std::chrono::steady_clock::now();
+    const QpSolution primal = solve_screened(qp, {}, {}, {});
+    const auto t2 = std::chrono::steady_clock::now();
+    dual_seconds += std::chrono::duration<double>(t1 - t0).count();
+    primal_seconds += std::chrono::duration<double>(t2 - t1).count();
+    expect_kkt(qp, dual, 1e-8 * (1.0 + qp.gradient.lpNorm<Eigen::Infinity>()));
+    ASSERT_EQ(primal.status, QpStatus::optimal);
+    EXPECT_NEAR(dual.objective, primal.objective, 1e-9 * std::max(1.0, std::abs(primal.objective)));
+  }
+  std::printf("many-row QPs (30 variables, 1200 rows): dual %.2f ms, screened primal %.2f ms per QP\n", dual_seconds * 1e3 / 20,
+              primal_seconds * 1e3 / 20);
+}
+
+}  // namespace
