@@ -6,7 +6,7 @@
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/l1_merit.hpp"
 #include "cyclopt/nlp/sqp_subproblems.hpp"
-#include "cyclopt/qp/active_set_solver.hpp"
+#include "cyclopt/qp/convex_solve.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +67,7 @@ class Predictor {
   std::optional<FullStep> full_step(const Iterate& at, const MatrixXd& W, qp::WorkingSet& warm) {
     ++steps_;
     const nlp::LinearisationPoint lin{at.e, at.x, lower_, upper_};
-    const qp::QpSolution qp = qp::solve_active_set(nlp::sqp_subproblem(lin, W), s_.qp, warm);
+    const qp::QpSolution qp = qp::solve_convex(nlp::sqp_subproblem(lin, W), s_.qp, warm, qp::ScreeningOptions{});
     if (qp.status != qp::QpStatus::optimal) return std::nullopt;
     warm = qp.working_set;
     nlp::Penalties mu{qp.equality_multipliers.cwiseAbs(), qp.inequality_multipliers};

@@ -1,5 +1,6 @@
 #include "cyclopt/nlp/damped_bfgs.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -26,6 +27,14 @@ void damped_bfgs_update(Eigen::MatrixXd& W, const Eigen::VectorXd& s, const Eige
   const Eigen::VectorXd r = damped_gradient_change(W, s, y);
   W += r * (r.transpose() / s.dot(r)) - Ws * (Ws.transpose() / sWs);
   W = 0.5 * (W + W.transpose()).eval();  // keep exactly symmetric against rounding drift
+  // In exact arithmetic (6.22) keeps W positive definite; in floating point the curvature along
+  // directions the steps keep revisiting can collapse to rounding level (eigenvalues 1e-13 beside
+  // 1e4 seen on the walker). Such a W is restored to the floor of (6.24) - a safeguard, not in the seed.
+  const Eigen::LLT<Eigen::MatrixXd> llt(W);
+  const Eigen::VectorXd pivots = llt.matrixLLT().diagonal();
+  if (llt.info() != Eigen::Success ||
+      !(pivots.cwiseAbs2().minCoeff() >= std::sqrt(std::numeric_limits<double>::epsilon()) * W.diagonal().maxCoeff()))
+    W = clamped_hessian(W);
 }
 
 Eigen::MatrixXd scaled_identity_update(const Eigen::VectorXd& s, const Eigen::VectorXd& y) {

@@ -7,6 +7,7 @@
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/l1_merit.hpp"
 #include "cyclopt/nlp/sqp_subproblems.hpp"
+#include "cyclopt/qp/convex_solve.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -123,7 +124,7 @@ bool SqpRun::is_kkt_point() {
 
 // Step 3: the QP (6.7); penalties (6.9).
 std::optional<SearchDirection> SqpRun::search_direction() {
-  const qp::QpSolution qp = qp::solve_screened(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
+  const qp::QpSolution qp = qp::solve_convex(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
