@@ -4,10 +4,12 @@
 // solution are the starts; every start is solved by each solver (multistart in parallel on all
 // cores). Printed per solver: KKT successes, distinct optima, starts reaching the best optimum,
 // median and total solve time, wall time. The seed reports 100/100 KKT and 45/100 at the best
-// optimum for its SQP (MaxIter = 3000). The SQP starts from W_1 of eq. (6.24) on a difference
-// Hessian of the Lagrangian (SqpOptions::difference_hessian).
+// optimum for its SQP (MaxIter = 3000), started from W_1 = I as in the seed's comparison; W_1 of
+// eq. (6.24) on a difference Hessian of the Lagrangian (SqpOptions::difference_hessian) is the
+// alternative.
 //
-// usage: chapter8_bench [N = 100] [solvers = sqp,ipopt] [scale = 0.05]
+// usage: chapter8_bench [N = 100] [solvers = sqp,ipopt] [scale = 0.05] [w1 = identity|difference] [replay]
+//   replay = k: solve only start k (seed 1000 + k) with the first solver, printing its iteration log.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/nlp/solve.hpp"
@@ -26,20 +28,37 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 100;
   const std::string solvers = argc > 2 ? argv[2] : "sqp,ipopt";
   const double scale = argc > 3 ? std::atof(argv[3]) : 0.05;
+  const std::string w1 = argc > 4 ? argv[4] : "identity";
+  if (w1 != "identity" && w1 != "difference") {
+    std::fprintf(stderr, "w1: '%s', expected identity or difference\n", w1.c_str());
+    return 1;
+  }
   std::printf("chapter8_bench on %s\n", cyclopt::bench::machine_line().c_str());
   const WalkerModel<double> model = make_walker_model(foot::foot_preset("P1-barefoot-left-HM").spec);
   const GaitProblemOptions po{Objective::mechanical, 1.3, Quadrature::trapezoid, {}};
   nlp::SolverOptions base = nlp::seed_table_6_2_options();
   base.max_iterations = 3000;  // as the seed for this experiment (footnote 1 of section 8.1)
-  // W_1 from the difference Hessian (6.23)/(6.24): from W_1 = I the SQP fails on this walker.
-  base.sqp.difference_hessian = true;
+  base.sqp.difference_hessian = w1 == "difference";
   const GaitOptimum ref = optimise_gait(model, po, base);
   std::printf("reference optimum x* from the starting gait: f_mech %.8f (%s, %d iterations, %.1f s)\n",
               ref.summary.objective, nlp::to_string(ref.summary.termination), ref.summary.iterations,
               ref.summary.wall_seconds);
   const GaitEvaluator ev(model);
   const GaitProblem shape(model, po);
-  std::printf("%d starts: x* + %.3f rad N(0,1) per entry, redrawn until real (seeds 1000..%d)\n\n", n, scale, 999 + n);
+  if (argc > 5) {
+    const int k = std::atoi(argv[5]);
+    std::mt19937_64 rng(1000 + static_cast<std::uint64_t>(k));
+    nlp::SolverOptions replay = base;
+    replay.solver = nlp::parse_solver_kind(solvers.substr(0, solvers.find(',')));
+    replay.print_level = 2;
+    GaitProblem problem(model, po);
+    const nlp::SolverSummary s = nlp::solve(problem, replay, shape.initial_point(perturbed_gait(ev, ref.z, scale, rng)));
+    std::printf("replay of start %d: %s, %d it, f_mech %.8f, kkt %.1e: %s\n", k, nlp::to_string(s.termination), s.iterations,
+                s.objective, s.kkt_error, s.message.c_str());
+    return 0;
+  }
+  std::printf("%d starts: x* + %.3f rad N(0,1) per entry, redrawn until real (seeds 1000..%d); SQP W_1: %s\n\n", n, scale,
+              999 + n, w1 == "identity" ? "I, then (6.25)" : "(6.24) on the difference Hessian");
   std::printf("%-6s %8s %8s %10s %12s %12s %10s %s\n", "solver", "KKT", "optima", "at best", "median (s)", "total (s)",
               "wall (s)", "best f_mech");
   std::stringstream list(solvers);
@@ -68,6 +87,11 @@ int main(int argc, char** argv) {
       if (s.success() && std::abs(s.objective - best) <= 1e-5 * std::max(1.0, std::abs(best))) ++at_best;
     std::printf("%-6s %5d/%-3d %8zu %7d/%-3d %12.2f %12.1f %10.1f %.8f\n", name.c_str(), r.successes, n, r.optima.size(),
                 at_best, n, times[times.size() / 2], total, r.wall_seconds, best);
+    for (std::size_t i = 0; i < r.runs.size(); ++i) {
+      const nlp::SolverSummary& s = r.runs[i];
+      std::printf("         start %2zu: %-18s %5d it %6d f + %5d J  f_mech %.8f  kkt %.1e  %6.2f s\n", i, nlp::to_string(s.termination),
+                  s.iterations, s.function_evaluations, s.jacobian_evaluations, s.objective, s.kkt_error, s.wall_seconds);
+    }
     for (std::size_t k = 0; k < std::min<std::size_t>(r.optima.size(), 5); ++k)
       std::printf("         optimum %zu: f_mech %.8f reached by %zu starts\n", k + 1, r.optima[k].objective,
                   r.optima[k].starts.size());

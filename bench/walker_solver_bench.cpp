@@ -5,7 +5,7 @@
 // usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
 //   options (integer, number or string, recognised in that order); the word difference_hessian
-//   sets SqpOptions::difference_hessian.
+//   sets SqpOptions::difference_hessian, the word f_usq the objective (5.101) instead of f_mech (5.102).
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -43,13 +43,15 @@ int main(int argc, char** argv) {
   }
   const std::string foot_name = argv[1];
   const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
-  const walker::GaitProblemOptions po{walker::Objective::mechanical, std::atof(argv[2]), walker::Quadrature::trapezoid, {}};
+  walker::GaitProblemOptions po{walker::Objective::mechanical, std::atof(argv[2]), walker::Quadrature::trapezoid, {}};
   nlp::SolverOptions so = nlp::seed_table_6_2_options();
   so.solver = nlp::parse_solver_kind(argv[3]);
   if (argc > 4) so.max_iterations = std::atoi(argv[4]);
   for (int k = 5; k < argc; ++k)
     if (std::string(argv[k]) == "difference_hessian")
       so.sqp.difference_hessian = true;
+    else if (std::string(argv[k]) == "f_usq")
+      po.objective = walker::Objective::squared_torque;
     else
       add_ipopt_option(so.ipopt, argv[k]);
   const walker::GaitOptimum r = walker::optimise_gait(model, po, so);

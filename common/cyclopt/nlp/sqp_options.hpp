@@ -30,6 +30,10 @@ struct SqpOptions {
   // of -10^20 is what the rule of step 18 needs, so that is the default here.
   double objective_limit = -1e20;
   bool second_order_correction = true;  // EQP projection, eqs. (6.16)-(6.19)
+  // After step 9 had to shorten d_k to reach a real solution (factor beta < 1), bound the next QP
+  // step by |beta d_k|_inf, doubling the bound after every full step (not in the seed; the QP is
+  // solved without the box if the box makes it incompatible).
+  bool evaluable_step_bound = true;
   // Largest number of backtracking steps (sequence 1, tau, tau^2, ...) before the line search
   // (steps 9 and 12) gives up; 0.7^100 ~ 3e-16.
   int max_backtracking_steps = 100;

@@ -34,6 +34,7 @@ constexpr double kStationaryViolationRatio = 1e-12;
 constexpr double kMeritNoiseUlps = 10.0;
 // Steps 6/7: rho-increases of the penalty before giving up (rho^60 ~ 1e18 for rho = 2).
 constexpr int kMaxPenaltyIncreases = 60;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // A search direction d_k with the penalties that make the l1 merit accept it (steps 3-7).
 struct SearchDirection {
@@ -95,6 +96,7 @@ class SqpRun {
   double trust_radius_, min_trust_radius_, max_trust_radius_;
   double scalar_penalty_;  // max of the previous penalties, eq. (6.10)
   double q_reduction_ = 0.0;
+  double step_bound_ = std::numeric_limits<double>::infinity();  // box on d in (6.7), see line_search
 };
 
 ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& inequalities) const {
@@ -124,7 +126,15 @@ bool SqpRun::is_kkt_point() {
 
 // Step 3: the QP (6.7); penalties (6.9).
 std::optional<SearchDirection> SqpRun::search_direction() {
-  const qp::QpSolution qp = qp::solve_convex(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
+  qp::QpSolution qp;
+  if (std::isfinite(step_bound_)) {
+    qp::QuadraticProgram boxed = sqp_subproblem(here(), W_);
+    boxed.lower_bounds = boxed.lower_bounds.cwiseMax(-step_bound_);
+    boxed.upper_bounds = boxed.upper_bounds.cwiseMin(step_bound_);
+    qp = qp::solve_convex(boxed, sqp_.qp, working_set_, sqp_.screening);
+    if (qp.status == qp::QpStatus::infeasible) step_bound_ = kInfinity;  // the box, not (6.7), may be incompatible
+  }
+  if (!std::isfinite(step_bound_)) qp = qp::solve_convex(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
@@ -202,6 +212,12 @@ std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
     beta *= tau;
     d = beta * dir.d;
   }
+  // Evaluable step bound (a deviation from the seed): the next QP (6.7) steps stay within the
+  // length that had a real solution here, and the bound doubles after each full step. Without it
+  // iterates at the edge of the domain of real solutions take QP steps thousands of times too long
+  // and spend all of MaxFun on step 9 (seen on the walker: beta ~ 5e-4 for hundreds of iterations).
+  if (sqp_.evaluable_step_bound && dir.compatible)
+    step_bound_ = beta < 1.0 ? beta * dir.d.lpNorm<Eigen::Infinity>() : 2.0 * step_bound_;
   // Step 10: merit test (6.15).
   if (phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * beta * q_reduction_ - noise) return project(x_ + d);
   // Step 11: EQP projection (6.16)-(6.18) at x_k + d_k, only if the QP (6.7) was compatible.
@@ -219,8 +235,12 @@ std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
   double alpha = 1.0;
   for (int k = 0; k <= sqp_.max_backtracking_steps; ++k, alpha *= tau) {
     const VectorXd trial = project(x_ + alpha * d + alpha * alpha * d_soc);
-    if (evaluates(trial) && phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * alpha * beta * q_reduction_ - noise)
+    if (evaluates(trial) && phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * alpha * beta * q_reduction_ - noise) {
+      if (options_.print_level > 1)
+        std::printf("sqp        line search: beta %.1e (real solution), alpha %.1e (6.19)%s, model reduction %.3e\n", beta, alpha,
+                    d_soc.isZero() ? "" : " with second-order correction", q_reduction_);
       return trial;  // step 13
+    }
   }
   stop(Termination::numerical_failure, "line search found no sufficient decrease of the l1 merit (Algorithm 1, step 12)");
   return std::nullopt;
