@@ -16,6 +16,7 @@
 #include "cyclopt/nlp/solve.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
+#include "solver_configuration.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,26 +25,6 @@
 
 using namespace cyclopt;
 using namespace cyclopt::walker;
-
-namespace {
-
-nlp::SolverOptions configuration(const std::string& name) {
-  nlp::SolverOptions o = nlp::seed_table_6_2_options();
-  o.max_iterations = 3000;  // as the seed for this experiment (footnote 1 of section 8.1)
-  if (name == "sqp") return o;
-  if (name == "sqp-dh") {
-    o.sqp.difference_hessian = true;
-    return o;
-  }
-  if (name == "ipopt") {
-    o.solver = nlp::SolverKind::ipopt;
-    return o;
-  }
-  std::fprintf(stderr, "configuration '%s': expected sqp, sqp-dh or ipopt\n", name.c_str());
-  std::exit(1);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 100;
@@ -54,7 +35,7 @@ int main(int argc, char** argv) {
   const GaitProblemOptions po{Objective::mechanical, 1.3, Quadrature::trapezoid, {}};
   GaitOptimum ref;
   for (const char* name : {"sqp", "sqp-dh"}) {
-    GaitOptimum r = optimise_gait(model, po, configuration(name));
+    GaitOptimum r = optimise_gait(model, po, cyclopt::bench::solver_configuration(name));
     std::printf("reference candidate (%s from the starting gait): f_mech %.8f (%s, %d iterations, %.1f s)\n", name,
                 r.summary.objective, nlp::to_string(r.summary.termination), r.summary.iterations, r.summary.wall_seconds);
     if (r.summary.success() && (!ref.summary.success() || r.summary.objective < ref.summary.objective)) ref = std::move(r);
@@ -68,7 +49,7 @@ int main(int argc, char** argv) {
   if (argc > 4) {
     const int k = std::atoi(argv[4]);
     std::mt19937_64 rng(1000 + static_cast<std::uint64_t>(k));
-    nlp::SolverOptions replay = configuration(solvers.substr(0, solvers.find(',')));
+    nlp::SolverOptions replay = cyclopt::bench::solver_configuration(solvers.substr(0, solvers.find(',')));
     replay.print_level = 2;
     GaitProblem problem(model, po);
     const nlp::SolverSummary s = nlp::solve(problem, replay, shape.initial_point(perturbed_gait(ev, ref.z, scale, rng)));
@@ -86,7 +67,7 @@ int main(int argc, char** argv) {
     nlp::MultistartOptions mo;
     mo.num_starts = n;
     mo.base_seed = 1000;
-    mo.solver = configuration(name);
+    mo.solver = cyclopt::bench::solver_configuration(name);
     mo.objective_tolerance = 1e-5;
     mo.x_tolerance = 1e-2;
     const nlp::MultistartResult r = nlp::multistart(

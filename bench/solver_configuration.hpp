@@ -1,0 +1,29 @@
+#pragma once
+// The SQP/Ipopt configurations the walker benchmarks compare, by name: sqp (seed Table 6.2,
+// W_1 = I then (6.25)), sqp-dh (W_1 from (6.24) on the difference Hessian), ipopt (the adapter's
+// defaults). MaxIter 3000 as the seed's chapter-8 experiments.
+#include "cyclopt/nlp/solver_options.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace cyclopt::bench {
+
+inline nlp::SolverOptions solver_configuration(const std::string& name) {
+  nlp::SolverOptions o = nlp::seed_table_6_2_options();
+  o.max_iterations = 3000;  // as the seed for chapter 8 (footnote 1 of section 8.1)
+  if (name == "sqp") return o;
+  if (name == "sqp-dh") {
+    o.sqp.difference_hessian = true;
+    return o;
+  }
+  if (name == "ipopt") {
+    o.solver = nlp::SolverKind::ipopt;
+    return o;
+  }
+  std::fprintf(stderr, "configuration '%s': expected sqp, sqp-dh or ipopt\n", name.c_str());
+  std::exit(1);
+}
+
+}  // namespace cyclopt::bench
