@@ -225,7 +225,7 @@ std::optional<Eigen::VectorXd> run_part_b_task(TaskKind kind, const MinimumJerkS
                 r.summary.iterations, r.integrations, r.wall_seconds);
     return std::nullopt;
   }
-  const VirtualConstraintTorque law(bezier_from_free(r.coefficients), 400.0, 40.0, kModel);
+  const VirtualConstraintTorque law(bezier_from_free(r.coefficients), kConstraintGainP, kConstraintGainD, kModel);
   const OneStep full = one_step_map(kModel, law, SectionState(spec.initial_rate, 0.0, 0.0), tight_options());
   if (!full.ok) {
     std::printf("%-34s full-model check failed\n", name.c_str());
@@ -331,7 +331,7 @@ int main(int argc, char** argv) {
                 rounds_completed(PiecewiseLinearTorque(*part_a_curve), kReferenceRate, 20));
   }
   if (single) {
-    const VirtualConstraintTorque law(bezier_from_free(*single), 400.0, 40.0, kModel);
+    const VirtualConstraintTorque law(bezier_from_free(*single), kConstraintGainP, kConstraintGainD, kModel);
     print_multipliers("part B closed loop (min jerk)", law);
     std::printf("  rounds completed from the handstand: %d of 20\n", rounds_completed(law, kReferenceRate, 20));
   }

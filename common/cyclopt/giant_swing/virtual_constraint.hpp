@@ -103,6 +103,9 @@ ConstrainedAccelerations<T> constrained_accelerations(const Model& model, const 
 
 // Hip torque law enforcing alpha = b(phi) with error dynamics e'' + kd e' + kp e = 0
 // (e = alpha - b(phi)): the stabilising feedback the seed asks for in ch. 5.2 (eq. 5.3-5.4).
+// Default gains: a double pole of the error dynamics at -20/s.
+inline constexpr double kConstraintGainP = 400.0;  // 1/s^2
+inline constexpr double kConstraintGainD = 40.0;   // 1/s
 class VirtualConstraintTorque : public HipTorqueLawOf<VirtualConstraintTorque> {
  public:
   VirtualConstraintTorque(BezierCoefficients<double> coefficients, double kp, double kd, const Model& model)
