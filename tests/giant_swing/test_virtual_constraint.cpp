@@ -26,13 +26,13 @@ SimulationOptions tight_options() {
 
 // Pike after the lowest point: free coefficients a (0, 0, 1, 1).
 VirtualConstraintTorque law_for(double a) {
-  return VirtualConstraintTorque(bezier_from_free<double>(Eigen::Vector4d(0.0, 0.0, a, a)), kKp, kKd, kModel);
+  return VirtualConstraintTorque(bezier_from_free(Eigen::Vector4d(0.0, 0.0, a, a)), kKp, kKd, kModel);
 }
 
 // The amplitude a for which phi' returns to omega after one swing (Newton on the zero dynamics).
 double amplitude() {
   static const double a = [] {
-    MinimumJerkProblem problem(kModel, default_task(TaskKind::single_swing), 400);
+    MinimumJerkProblem problem(kModel, default_task(TaskKind::single_swing), {4, 400});
     const auto x = scale_to_close(problem, Eigen::Vector4d(0.0, 0.0, 1.0, 1.0), 1.2);
     return x ? (*x)[2] : 0.0;
   }();
@@ -40,7 +40,7 @@ double amplitude() {
 }
 
 TEST(VirtualConstraint, BezierDerivativesMatchDifferences) {
-  const BezierCoefficients<double> c = bezier_from_free<double>(Eigen::Vector4d(0.3, -0.2, 0.8, 0.5));
+  const BezierCoefficients<double> c = bezier_from_free(Eigen::Vector4d(0.3, -0.2, 0.8, 0.5));
   for (double phi : {0.4, 2.0, 3.5, 5.9}) {
     const auto b = bezier_hip_angle<double>(c, phi);
     const double h = 1e-5;

@@ -134,6 +134,23 @@ TEST(IpoptOptionPassthrough, SetsIpoptOptionsAndRejectsUnknownNames) {
   EXPECT_THROW(solve(*problem, o, vec({1, 5, 5, 1})), std::invalid_argument);
 }
 
+TEST(IpoptDifferenceHessian, ReachesThePublishedOptimaInFewerIterationsThanLimitedMemory) {
+  int difference_iterations = 0, limited_memory_iterations = 0;
+  for (const TestProblem& tp : hock_schittkowski_problems()) {
+    auto problem = tp.make();
+    SolverOptions o;
+    o.solver = SolverKind::ipopt;
+    const SolverSummary limited_memory = solve(*problem, o, tp.x0);
+    o.ipopt.difference_hessian = true;
+    const SolverSummary s = solve(*problem, o, tp.x0);
+    ASSERT_TRUE(s.success()) << tp.name << ": " << s.message;
+    EXPECT_NEAR(s.objective, tp.f_star, 1e-6 * std::max(1.0, std::abs(tp.f_star))) << tp.name;
+    difference_iterations += s.iterations;
+    limited_memory_iterations += limited_memory.iterations;
+  }
+  EXPECT_LT(difference_iterations, limited_memory_iterations);
+}
+
 TEST(SqpInitialHessian, DifferenceHessianStartReachesThePublishedOptima) {
   // Not HS39: its Lagrangian Hessian is indefinite at the start, the clamp (6.24) leaves
   // curvature sqrt(eps) lambda_max in those directions and the first steps diverge.

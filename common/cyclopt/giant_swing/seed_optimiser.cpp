@@ -61,6 +61,16 @@ SeedMethodResult optimise_seed_method(const Model& model, const TaskSpec& spec) 
   return result;
 }
 
+nlohmann::json to_json(const RoundResult& round, double omega) {
+  return {{"phi_rate_over_omega", round.phi_rate / omega},
+          {"alpha_deg", round.alpha * kDegPerRad},
+          {"alpha_rate_deg_s", round.alpha_rate * kDegPerRad},
+          {"duration_s", round.duration},
+          {"friction_loss_J", round.friction_loss},
+          {"jerk_rad2_s5", round.jerk},
+          {"moment_Nm2_s", round.torque_integral}};
+}
+
 nlohmann::json to_json(const SeedMethodResult& r, const TaskSpec& spec) {
   nlohmann::json j;
   j["task"] = to_json(spec);
@@ -68,14 +78,7 @@ nlohmann::json to_json(const SeedMethodResult& r, const TaskSpec& spec) {
   j["score"] = r.best.score;
   j["support_values_Nm"] = std::vector<double>(r.torque.support_values.begin(), r.torque.support_values.end());
   nlohmann::json rounds = nlohmann::json::array();
-  for (const RoundResult& round : r.best.simulation.rounds)
-    rounds.push_back({{"phi_rate_over_omega", round.phi_rate / spec.omega},
-                      {"alpha_deg", round.alpha * kDegPerRad},
-                      {"alpha_rate_deg_s", round.alpha_rate * kDegPerRad},
-                      {"duration_s", round.duration},
-                      {"friction_loss_J", round.friction_loss},
-                      {"jerk_rad2_s5", round.jerk},
-                      {"moment_Nm2_s", round.torque_integral}});
+  for (const RoundResult& round : r.best.simulation.rounds) rounds.push_back(to_json(round, spec.omega));
   j["rounds"] = rounds;
   j["failed"] = r.best.simulation.failed;
   if (r.best.simulation.failed) {

@@ -1,10 +1,10 @@
 #pragma once
 // Part B parametrisation: the hip angle as a virtual constraint alpha = b(phi) with phi as the
-// phase variable, b a Bezier polynomial of degree 9 in s = phi / 2 pi (wrapped to [0, 1] for a
-// sequence of swings). The first three and last three coefficients are zero, so
-// alpha = alpha' = alpha'' = 0 in the handstand at both ends (seed 000, eq. 3.10-3.11, and a
-// C^2-periodic continuation); four free coefficients remain. By the convex-hull property,
-// coefficient bounds [-pi/4, pi/2] keep alpha in the admissible range of ch. 4.2.
+// phase variable, b a Bezier polynomial of degree m = n + 5 in s = phi / 2 pi (wrapped to [0, 1] for
+// a sequence of swings), n = 4..12 free coefficients. The first three and last three coefficients
+// are zero, so alpha = alpha' = alpha'' = 0 in the handstand at both ends (seed 000, eq. 3.10-3.11,
+// and a C^2-periodic continuation) for every n. By the convex-hull property, coefficient bounds
+// [-pi/4, pi/2] keep alpha in the admissible range of ch. 4.2.
 //
 // On the constraint alpha'' = b' phi'' + b'' phi'^2. The first row of M q'' = h + (M_R, M_alpha)
 // (the angular-momentum balance 3.5, free of M_alpha) then gives
@@ -21,18 +21,22 @@
 
 namespace cyclopt::giant_swing {
 
-inline constexpr int kBezierDegree = 9;
-inline constexpr int kFreeBezierCoefficients = kBezierDegree - 5;  // c3..c6
+inline constexpr int kMinFreeBezierCoefficients = 4;
+inline constexpr int kMaxFreeBezierCoefficients = 12;
+inline constexpr int kMaxBezierDegree = kMaxFreeBezierCoefficients + 5;
 
+// c0..cm, m = degree; storage on the stack (at most kMaxBezierDegree + 1 entries).
 template <class T>
-using BezierCoefficients = Eigen::Matrix<T, kBezierDegree + 1, 1>;
+using BezierCoefficients = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxBezierDegree + 1, 1>;
 
-// Full coefficient vector from the free ones (c0 = c1 = c2 = c7 = c8 = c9 = 0).
-template <class T>
-BezierCoefficients<T> bezier_from_free(const Eigen::Matrix<T, kFreeBezierCoefficients, 1>& free) {
-  BezierCoefficients<T> c;
-  for (int i = 0; i <= kBezierDegree; ++i) c[i] = T(0.0);
-  for (int i = 0; i < kFreeBezierCoefficients; ++i) c[i + 3] = free[i];
+// Full coefficient vector from the n free ones c3..c(n+2) (c0 = c1 = c2 = 0 = the last three).
+template <class Derived>
+BezierCoefficients<typename Derived::Scalar> bezier_from_free(const Eigen::MatrixBase<Derived>& free) {
+  using T = typename Derived::Scalar;
+  const int n = int(free.size());
+  BezierCoefficients<T> c(n + 6);
+  for (int i = 0; i < n + 6; ++i) c[i] = T(0.0);
+  for (int i = 0; i < n; ++i) c[i + 3] = free[i];
   return c;
 }
 
@@ -43,13 +47,14 @@ std::array<R, 4> bezier_hip_angle(const BezierCoefficients<C>& coefficients, con
   // Wrap into [0, 1] for a sequence of swings; phi = 2 pi itself stays at s = 1 (end of the swing).
   const double shift = ad::value(u) >= 0.0 && ad::value(u) <= 1.0 ? 0.0 : std::floor(ad::value(u));
   const S s = u - shift;
+  const int degree = int(coefficients.size()) - 1;
   std::array<R, 4> out;
-  std::array<C, kBezierDegree + 1> diff;
-  for (int i = 0; i <= kBezierDegree; ++i) diff[static_cast<std::size_t>(i)] = coefficients[i];
+  std::array<C, kMaxBezierDegree + 1> diff{};
+  for (int i = 0; i <= degree; ++i) diff[static_cast<std::size_t>(i)] = coefficients[i];
   double factor = 1.0;  // m!/(m-k)! / (2 pi)^k
   for (int k = 0; k < 4; ++k) {
-    const int m = kBezierDegree - k;
-    std::array<R, kBezierDegree + 1> work;  // de Casteljau on the k-th differences
+    const int m = degree - k;
+    std::array<R, kMaxBezierDegree + 1> work{};  // de Casteljau on the k-th differences
     for (int i = 0; i <= m; ++i) work[static_cast<std::size_t>(i)] = R(diff[static_cast<std::size_t>(i)]);
     for (int r = 1; r <= m; ++r)
       for (int i = 0; i <= m - r; ++i)
@@ -98,6 +103,9 @@ ConstrainedAccelerations<T> constrained_accelerations(const Model& model, const 
 
 // Hip torque law enforcing alpha = b(phi) with error dynamics e'' + kd e' + kp e = 0
 // (e = alpha - b(phi)): the stabilising feedback the seed asks for in ch. 5.2 (eq. 5.3-5.4).
+// Default gains: a double pole of the error dynamics at -20/s.
+inline constexpr double kConstraintGainP = 400.0;  // 1/s^2
+inline constexpr double kConstraintGainD = 40.0;   // 1/s
 class VirtualConstraintTorque : public HipTorqueLawOf<VirtualConstraintTorque> {
  public:
   VirtualConstraintTorque(BezierCoefficients<double> coefficients, double kp, double kd, const Model& model)

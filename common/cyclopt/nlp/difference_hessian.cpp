@@ -10,9 +10,15 @@ namespace cyclopt::nlp {
 std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator& evaluator, const Eigen::VectorXd& x,
                                                                  const Evaluation& at,
                                                                  const Eigen::VectorXd& equality_multipliers,
-                                                                 const Eigen::VectorXd& inequality_multipliers) {
+                                                                 const Eigen::VectorXd& inequality_multipliers,
+                                                                 double objective_factor) {
   const Eigen::Index n = x.size();
-  const Eigen::VectorXd base = lagrangian_gradient(at, equality_multipliers, inequality_multipliers, {});
+  auto gradient = [&](const Evaluation& e) {
+    Evaluation weighted = e;
+    weighted.gradient *= objective_factor;
+    return lagrangian_gradient(weighted, equality_multipliers, inequality_multipliers, {});
+  };
+  const Eigen::VectorXd base = gradient(at);
   Eigen::MatrixXd H(n, n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const double h = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[j]));
@@ -21,8 +27,7 @@ std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator
       Eigen::VectorXd xh = x;
       xh[j] += side * h;
       if (!evaluator.evaluate(xh, true).ok) continue;
-      H.col(j) = (lagrangian_gradient(evaluator.evaluation(), equality_multipliers, inequality_multipliers, {}) - base) /
-                 (side * h);
+      H.col(j) = (gradient(evaluator.evaluation()) - base) / (side * h);
       done = true;
       break;
     }

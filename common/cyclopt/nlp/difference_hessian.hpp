@@ -2,7 +2,8 @@
 // Hessian of the Lagrangian by forward differences of its exact (AD) gradient, for W_1 of the
 // seed's SQP (seed 001 eq. (6.23); the seed uses the complex step on the gradients): n
 // evaluations with derivatives, symmetrised. A point x + h e_j without a real solution is
-// replaced by x - h e_j (the seed's "no real solution" rule).
+// replaced by x - h e_j (the seed's "no real solution" rule). objective_factor sigma weights f in
+// L = sigma f + y_eq' c_eq + y_in' c_in (Ipopt's eval_h asks for sigma = 0 in its restoration phase).
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
 
@@ -17,6 +18,7 @@ namespace cyclopt::nlp {
 std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator& evaluator, const Eigen::VectorXd& x,
                                                                  const Evaluation& at,
                                                                  const Eigen::VectorXd& equality_multipliers,
-                                                                 const Eigen::VectorXd& inequality_multipliers);
+                                                                 const Eigen::VectorXd& inequality_multipliers,
+                                                                 double objective_factor = 1.0);
 
 }  // namespace cyclopt::nlp

@@ -1,6 +1,7 @@
 #include "cyclopt/nlp/ipopt_solver.hpp"
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
+#include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
 
 #include <IpIpoptApplication.hpp>
@@ -60,7 +61,7 @@ class ProblemTnlp : public Ipopt::TNLP {
     n = n_;
     m = m_eq_ + m_in_;
     nnz_jac_g = n * m;
-    nnz_h_lag = 0;
+    nnz_h_lag = options_.ipopt.difference_hessian ? n * (n + 1) / 2 : 0;
     index_style = C_STYLE;
     return true;
   }
@@ -154,8 +155,27 @@ class ProblemTnlp : public Ipopt::TNLP {
     summary_.bound_multipliers = Eigen::Map<const Eigen::VectorXd>(z_U, n) - Eigen::Map<const Eigen::VectorXd>(z_L, n);
   }
 
-  bool eval_h(Index, const Number*, bool, Number, Index, const Number*, bool, Index, Index*, Index*, Number*) override {
-    return false;  // limited-memory Hessian only
+  // Dense lower triangle, row by row: entry k of row i, column j <= i.
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda, bool, Index,
+              Index* iRow, Index* jCol, Number* values) override {
+    if (!options_.ipopt.difference_hessian) return false;
+    if (values == nullptr) {
+      for (Index i = 0, k = 0; i < n; ++i)
+        for (Index j = 0; j <= i; ++j, ++k) {
+          iRow[k] = i;
+          jCol[k] = j;
+        }
+      return true;
+    }
+    const Eigen::Map<const Eigen::VectorXd> point(x, n), multipliers(lambda, m);
+    if (!evaluate(n, x, true)) return false;
+    const Evaluation at = evaluator_.evaluation();
+    const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
+        evaluator_, point, at, multipliers.head(m_eq_), multipliers.tail(m_in_), obj_factor);
+    if (!H) return false;
+    for (Index i = 0, k = 0; i < n; ++i)
+      for (Index j = 0; j <= i; ++j, ++k) values[k] = (*H)(i, j);
+    return true;
   }
 
  private:
@@ -219,7 +239,7 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
   Ipopt::OptionsList& o = *app->Options();
   o.SetIntegerValue("print_level", options.print_level);
   if (options.print_level == 0) o.SetStringValue("sb", "yes");  // no banner
-  o.SetStringValue("hessian_approximation", "limited-memory");
+  o.SetStringValue("hessian_approximation", options.ipopt.difference_hessian ? "exact" : "limited-memory");
   o.SetIntegerValue("limited_memory_max_history", options.ipopt.limited_memory_max_history);
   o.SetStringValue("mu_strategy", options.ipopt.mu_strategy);
   o.SetIntegerValue("max_iter", options.max_iterations);

@@ -2,7 +2,8 @@
 // Ipopt 3.11 adapter: solves any nlp::Problem with Ipopt's interior-point method.
 //
 // - exact first derivatives from Problem::evaluate; the Jacobian is passed with a dense sparsity
-//   pattern; the Hessian is Ipopt's limited-memory approximation (no second derivatives needed);
+//   pattern; the Hessian is Ipopt's limited-memory approximation (no second derivatives needed), or
+//   (IpoptOptions::difference_hessian) differences of the exact gradients, dense lower triangle;
 // - an evaluation failure (EvaluationStatus !ok, or a non-finite value) is returned as `false`
 //   from eval_*, so Ipopt cuts back the step (the seed's "no real solution", eq. 5.87);
 // - app->Initialize("") always: no stray ipopt.opt is read;

@@ -43,7 +43,8 @@ const std::vector<std::string>& known_scenes() {
   return v;
 }
 const std::vector<std::string>& known_tasks() {
-  static const std::vector<std::string> v = {"evaluate", "optimise", "multistart", "continuation", "sweep", "foot_sweep"};
+  static const std::vector<std::string> v = {"evaluate", "optimise", "multistart", "continuation", "sweep", "foot_sweep",
+                                            "giant_swing"};
   return v;
 }
 const std::vector<std::string>& known_objectives() {

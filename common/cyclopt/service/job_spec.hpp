@@ -7,7 +7,7 @@
 //    "limits": {"max_wall_seconds": 600, "max_iterations": 100000}}
 //
 // Common fields: scene (walker | giant_swing), task (evaluate | optimise | multistart |
-// continuation | sweep | foot_sweep), name (<= 200 chars), objective (f_mech: cost of transport of the positive mechanical work, seed 001 eq. 5.102 |
+// continuation | sweep | foot_sweep | giant_swing), name (<= 200 chars), objective (f_mech: cost of transport of the positive mechanical work, seed 001 eq. 5.102 |
 // f_usq: squared torques, eq. 5.101), solver {solver: ipopt | sqp, max_iterations 1..100000,
 // optimality_tolerance / constraint_tolerance in [1e-14, 1], print_level 0..12}, limits
 // {max_wall_seconds in (0, 604800], max_iterations 1..1e9}.
