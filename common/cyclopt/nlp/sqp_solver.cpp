@@ -35,6 +35,8 @@ constexpr double kMeritNoiseUlps = 10.0;
 // Steps 6/7: rho-increases of the penalty before giving up (rho^60 ~ 1e18 for rho = 2).
 constexpr int kMaxPenaltyIncreases = 60;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kShortStep = 1e-4;
+constexpr int kStalledIterations = 25;
 
 // A search direction d_k with the penalties that make the l1 merit accept it (steps 3-7).
 struct SearchDirection {
@@ -77,6 +79,7 @@ class SqpRun {
   std::optional<SearchDirection> relaxed_direction();
   bool evaluates(const VectorXd& x) { return evaluator_.evaluate(project(x), false).ok; }
   std::optional<VectorXd> line_search(const SearchDirection& dir);
+  MatrixXd restarted_hessian(const VectorXd& step, const VectorXd& gradient_change);
   ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
   void finish();
 
@@ -97,6 +100,7 @@ class SqpRun {
   double scalar_penalty_;  // max of the previous penalties, eq. (6.10)
   double q_reduction_ = 0.0;
   double step_bound_ = std::numeric_limits<double>::infinity();  // box on d in (6.7), see line_search
+  int short_steps_ = 0;  // consecutive accepted steps below kShortStep
 };
 
 ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& inequalities) const {
@@ -319,14 +323,17 @@ void SqpRun::run(const VectorXd& x0) {
     // Step 17: y_k of (6.20) with the new multipliers at both points (bound terms cancel).
     const VectorXd gradient_change = lagrangian_gradient(e, y.equality, y.inequality, {}) -
                                      lagrangian_gradient(current_, y.equality, y.inequality, {});
+    short_steps_ = step_norm < kShortStep * std::max(1.0, x_.lpNorm<Eigen::Infinity>()) ? short_steps_ + 1 : 0;
+    const bool stalled = short_steps_ == kStalledIterations;
     if (k == 1 && identity_start)
       W_ = scaled_identity_update(step, gradient_change);  // (6.25)
-    else
+    else if (!stalled)
       damped_bfgs_update(W_, step, gradient_change);  // (6.22)
     scalar_penalty_ = dir->mu.max();
     x_ = *next;
     current_ = e;
     multipliers_ = std::move(y);
+    if (stalled) W_ = restarted_hessian(step, gradient_change);
     summary_.iterations = k;
     IterationReport report{k, current_.objective, constraint_violation(current_, x_, lower_, upper_),
                            lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
@@ -342,6 +349,19 @@ void SqpRun::run(const VectorXd& x0) {
     }
   }
   finish();
+}
+
+// A stalled BFGS matrix - kStalledIterations consecutive steps below kShortStep, as the damped
+// update (6.22) builds curvature across the kinks of f_mech - is replaced by W_1's choice at the
+// current point x_k: (6.24) on the difference Hessian or the scaled identity (6.25) of the last
+// step. Not in the seed.
+MatrixXd SqpRun::restarted_hessian(const VectorXd& step, const VectorXd& gradient_change) {
+  short_steps_ = 0;
+  if (options_.print_level > 0) std::printf("sqp        W restart after %d short steps\n", kStalledIterations);
+  if (sqp_.difference_hessian)
+    if (const auto H = lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality))
+      return clamped_hessian(*H);
+  return scaled_identity_update(step, gradient_change);
 }
 
 void SqpRun::finish() {
