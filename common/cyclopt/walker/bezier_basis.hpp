@@ -16,6 +16,22 @@ struct BezierBasis {
   Eigen::MatrixXd second; // d^2/ds^2
 };
 
+// alpha B for coefficients of any scalar, B one of the tabulated bases: with Dual coefficients every
+// product is Dual * double (B is never cast to the coefficients' scalar).
+template <class Coefficients>
+Eigen::Matrix<typename Coefficients::Scalar, Eigen::Dynamic, Eigen::Dynamic> bezier_combination(const Coefficients& alpha,
+                                                                                              const Eigen::MatrixXd& B) {
+  using T = typename Coefficients::Scalar;
+  Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> r(alpha.rows(), B.cols());
+  for (int k = 0; k < B.cols(); ++k)
+    for (int j = 0; j < alpha.rows(); ++j) {
+      T sum = T(0.0);
+      for (int i = 0; i < B.rows(); ++i) sum += alpha(j, i) * B(i, k);
+      r(j, k) = sum;
+    }
+  return r;
+}
+
 // Basis on P equidistant points of [0, 1] (eq. 5.93); P >= 2, M >= 2.
 BezierBasis bezier_basis(int degree, int points);
 // Basis at arbitrary s (for forward simulation and plotting): columns of a (M+1) x 3 matrix
