@@ -37,12 +37,15 @@ template <int N>
 using DerivativeRows = Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor, kMaxSlots, N>;
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSlots, kMaxSlots>;
 
-// d += J X, row by row; zeros of J skipped (S, G and so every slot Jacobian are sparse).
+// d += J X, row by row; zeros of J skipped (S, G and so every slot Jacobian are sparse). Each row of
+// X is loaded once and added to every row of d that needs it.
 template <int N, class Jacobian>
 void add_product(const Jacobian& J, const DerivativeRows<N>& X, DerivativeRows<N>& d) {
-  for (int k = 0; k < J.rows(); ++k)
-    for (int j = 0; j < J.cols(); ++j)
-      if (J(k, j) != 0.0) d.row(k) += J(k, j) * X.row(j);
+  for (int j = 0; j < J.cols(); ++j) {
+    const Eigen::Matrix<double, 1, N> x = X.row(j);
+    for (int k = 0; k < J.rows(); ++k)
+      if (J(k, j) != 0.0) d.row(k) += J(k, j) * x;
+  }
 }
 
 // Duals with values v and derivative rows d.
