@@ -4,12 +4,18 @@
 // evaluation (values; values + Jacobian by forward-mode AD) and the relative errors of f_mech,
 // f_usq, the step period and Lambda against a converged reference (corrected trapezoid, P = 51200),
 // for the seed's cumulative trapezoid rule and the Euler-Maclaurin corrected one.
+//
+// walker_bench --jacobian: only P = 200 (trapezoid), value and value + Jacobian by the evaluator's
+// path and by the reference path (chunks of Dual<8>, model cast to Dual), best of 5 repeats, and
+// the largest difference between the two Jacobians relative to the largest entry of its row.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 #include "machine_info.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 
 using namespace cyclopt;
 using namespace cyclopt::walker;
@@ -32,9 +38,55 @@ double seconds_per_call(F&& f, double budget) {
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
+template <class F>
+double best_of(int repeats, F&& f, double budget) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) best = std::min(best, seconds_per_call(f, budget));
+  return best;
+}
+
+Eigen::MatrixXd stacked(const GaitDerivatives& d) {
+  Eigen::MatrixXd J(8 + d.inequalities.rows(), d.objective.size());
+  J << d.objective, d.f_mech, d.f_usq, d.speed_equality, d.step_length, d.step_period, d.mean_speed, d.floquet,
+      d.inequalities;
+  return J;
+}
+
+// Largest |J_a - J_b| of a row relative to the row's largest |J_b| entry, over all rows.
+double row_relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  double worst = 0.0;
+  for (int r = 0; r < a.rows(); ++r) {
+    const double scale = b.row(r).cwiseAbs().maxCoeff();
+    if (scale > 0.0) worst = std::max(worst, (a.row(r) - b.row(r)).cwiseAbs().maxCoeff() / scale);
+  }
+  return worst;
+}
+
+int jacobian_timings() {
+  std::printf("walker_bench --jacobian on %s\n", cyclopt::bench::machine_line().c_str());
+  std::printf("P = 200, trapezoid, automatic starting gait at 1.3 m/s; best of 5 repeats (ms)\n");
+  std::printf("%-20s %4s %10s %14s %16s %14s\n", "foot", "n_x", "value", "+Jacobian", "+Jacobian (ref)",
+              "max row diff");
+  for (const char* name : {"point", "P1-barefoot-left-HM", "P2-shoes-left-HMT"}) {
+    const GaitEvaluator ev(make_walker_model(foot::foot_preset(name).spec));
+    const StartingGait start = starting_gait(ev, StartingGaitOptions{});
+    GaitOptions opt;
+    opt.keep_trajectories = false;
+    const double tv = best_of(5, [&] { ev.evaluate(start.x, opt); }, 0.2);
+    const double tj = best_of(5, [&] { ev.evaluate_with_derivatives(start.x, opt); }, 0.3);
+    const double tr = best_of(5, [&] { ev.evaluate_with_reference_derivatives(start.x, opt); }, 0.3);
+    const double diff = row_relative_difference(stacked(ev.evaluate_with_derivatives(start.x, opt).derivatives),
+                                                stacked(ev.evaluate_with_reference_derivatives(start.x, opt).derivatives));
+    std::printf("%-20s %4d %10.4f %14.3f %16.3f %14.2e\n", name, static_cast<int>(start.x.size()), tv * 1e3, tj * 1e3,
+                tr * 1e3, diff);
+  }
+  return 0;
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "--jacobian") == 0) return jacobian_timings();
   std::printf("walker_bench on %s\n", cyclopt::bench::machine_line().c_str());
   std::printf("reference gaits: automatic starting gait at 1.3 m/s (starting_gait.hpp); errors relative to P = 51200, "
               "corrected trapezoid\n\n");

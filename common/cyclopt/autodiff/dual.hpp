@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <type_traits>
 
 namespace cyclopt::ad {
 
@@ -49,6 +50,14 @@ struct Dual {
   Dual& operator*=(double c) { v *= c; d *= c; return *this; }
   Dual& operator/=(double c) { v /= c; d /= c; return *this; }
 };
+
+// True for Dual<N> (lets templated code take shortcuts that need plain double derivative parts).
+template <class T>
+struct is_dual : std::false_type {};
+template <int N>
+struct is_dual<Dual<N>> : std::true_type {};
+template <class T>
+inline constexpr bool is_dual_v = is_dual<T>::value;
 
 // The value part of any scalar: identity for double, .v for Dual.
 inline double value(double x) { return x; }

@@ -8,12 +8,18 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <utility>
 
 namespace cyclopt::ad {
 
 // The real part that decides branches: x for double, x.v for Dual, x.real() for complex.
 template <class T>
 double value(const std::complex<T>& x) { return value(x.real()); }
+
+// The scalar of a computation mixing scalar types A and B (e.g. a double model with Dual gait
+// parameters): Dual<N> for (double, Dual<N>), complex for (double, complex), A for (A, A).
+template <class A, class B>
+using promoted_t = std::decay_t<decltype(std::declval<A>() * std::declval<B>())>;
 
 // Converts a double-valued constant into scalar type T (a constant: zero derivative part).
 template <class T>

@@ -1,7 +1,11 @@
 #pragma once
 // One call that every optimiser and the service use: evaluate a periodic gait at the gait
 // parameters x (and optionally perturbed model parameters), with the dense Jacobian of objective
-// and constraints from forward-mode automatic differentiation (chunks of ad::Dual<kJacobianChunk>).
+// and constraints from forward-mode automatic differentiation. Directions along x alone keep the
+// model double, so every grid point is differentiated locally in double and chained
+// (grid_point.hpp); for the default Bezier degree (20 or 30 gait parameters) one pass with
+// ad::Dual<n_x> carries every direction, otherwise, and with free model parameters (whose chunks
+// cast the model to Dual), chunks of ad::Dual<kJacobianChunk> directions.
 
 #include "cyclopt/walker/model_parameters.hpp"
 #include "cyclopt/walker/periodic_gait.hpp"
@@ -38,8 +42,16 @@ class GaitEvaluator {
   // Values and derivatives with respect to x and the listed model parameters (indices into p_mod).
   GaitEvaluation evaluate_with_derivatives(const Eigen::VectorXd& x, const GaitOptions& options,
                                            const std::vector<int>& parameter_indices = {}) const;
+  // The same derivatives by the plain reference path: chunks of ad::Dual<kJacobianChunk> with the
+  // whole model cast to Dual (its constants carrying zero derivatives). For checks and benchmarks.
+  GaitEvaluation evaluate_with_reference_derivatives(const Eigen::VectorXd& x, const GaitOptions& options,
+                                                     const std::vector<int>& parameter_indices = {}) const;
 
  private:
+  enum class DerivativePath { fast, reference };
+  GaitEvaluation derivatives(const Eigen::VectorXd& x, const GaitOptions& options, const std::vector<int>& parameter_indices,
+                             DerivativePath path) const;
+
   WalkerModel<double> model_;
   BezierBasis basis_;
 };

@@ -49,8 +49,8 @@ CoordinateVector<T> swap_configuration(const CoordinateVector<T>& q) {
   return r;
 }
 
-template <class T>
-ImpactResult<T> impact_map(const WalkerModel<T>& m, const CoordinateVector<T>& q_minus,
+template <class T, class MT>
+ImpactResult<T> impact_map(const WalkerModel<MT>& m, const CoordinateVector<T>& q_minus,
                            const CoordinateVector<T>& q_dot_minus) {
   const int nb = m.joint_count, ns = m.segment_count, nf = nb + 3;  // [x, z, theta_T, q_b]
   const StanceFrame<T> f = stance_frame(m, q_minus);
@@ -77,7 +77,7 @@ ImpactResult<T> impact_map(const WalkerModel<T>& m, const CoordinateVector<T>& q
   Mat D(ns + 2, ns + 2);
   for (int s = 0; s < ns + 2; ++s)
     for (int t = s; t < ns + 2; ++t) {
-      T g;
+      MT g;
       if (s < 2 && t < 2) g = m.total_mass;
       else if (s < 2) g = m.first_moment(t - 2);
       else g = m.gram(s - 2, t - 2);

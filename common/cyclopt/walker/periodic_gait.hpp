@@ -5,10 +5,12 @@
 // (5.101-5.102) with the zero-crossing correction of Fig. 5.3, the speed equality (5.103) and the
 // 10P+3 inequalities (5.104).
 //
-// Templated on the scalar: double for values, ad::Dual<N> for exact derivatives with respect to
-// the gait parameters x and/or model parameters, std::complex<double> for complex-step checks.
+// Templated on the scalars of the model (MT) and of x: double for values, ad::Dual<N> for exact
+// derivatives with respect to the gait parameters x (double model) and/or model parameters (Dual
+// model), std::complex<double> for complex-step checks. The gait's scalar is the two combined.
 
 #include "cyclopt/walker/bezier_basis.hpp"
+#include "cyclopt/walker/grid_point.hpp"
 #include "cyclopt/walker/quadrature.hpp"
 #include "cyclopt/walker/virtual_constraints.hpp"
 
@@ -91,8 +93,8 @@ T positive_part_trapezoid(const T& p0, const T& p1, const T& dt) {
 
 }  // namespace detail
 
-template <class T, class XVector>
-PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis, const XVector& x,
+template <class MT, class XVector, class T = ad::promoted_t<MT, typename XVector::Scalar>>
+PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis, const XVector& x,
                               const GaitOptions& opt) {
   using std::exp, std::sqrt, std::abs;
   constexpr double pi = std::numbers::pi;
@@ -107,14 +109,20 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
   g.theta_plus = vc.theta_plus;
   g.theta_minus = vc.theta_minus;
   const T span = vc.theta_minus - vc.theta_plus, h = span / double(P - 1);
-  const Matrix<T> qb = vc.alpha * basis.value.cast<T>();
-  const Matrix<T> qb1 = (vc.alpha * basis.first.cast<T>()) / span;
-  const Matrix<T> qb2 = (vc.alpha * basis.second.cast<T>()) / (span * span);
+  const Matrix<T> qb = bezier_combination(vc.alpha, basis.value);
+  const T inv_span = 1.0 / span;
+  const Matrix<T> qb1 = bezier_combination(vc.alpha, basis.first) * inv_span;
+  const Matrix<T> qb2 = bezier_combination(vc.alpha, basis.second) * T(inv_span * inv_span);
 
-  // Zero-dynamics coefficients on the grid (eq. 5.73, 5.76).
-  std::vector<StanceFrame<T>> frames(P);
+  // Dynamics on the constraint at every grid point (eq. 5.73, 5.76), and what the reconstruction
+  // needs of the stance frame (grid_point.hpp), plus the swing contact velocity per unit theta_dot
+  // at both ends.
+  Matrix<T> hip(2, P), swing_contact(2, P);
+  Vector<T> stance_foot_angle(m.has_feet() ? P : 0);
+  std::vector<GridPoint<T>> points(P);
   std::vector<ZeroDynamicsCoefficients<T>> zd(P);
   Vector<T> theta(P), mu1(P), mu2(P);
+  Vec2<T> unit_swing_velocity_plus = Vec2<T>::Zero(), unit_swing_velocity_minus = Vec2<T>::Zero();
   CoordinateVector<T> q(nq), gamma(nq), gamma1(nq);
   for (int i = 0; i < P; ++i) {
     theta(i) = vc.theta_plus + h * double(i);
@@ -124,8 +132,9 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
     gamma.tail(nb) = qb1.col(i);
     gamma1(0) = T(0.0);
     gamma1.tail(nb) = qb2.col(i);
-    frames[i] = stance_frame(m, q);
-    zd[i] = zero_dynamics_coefficients(m, frames[i], gamma, gamma1);
+    GridPoint<T>& point = points[i];
+    grid_point(m, q, gamma, gamma1, point);
+    zd[i] = zero_dynamics_coefficients(point.dynamics);
     if (!(ad::value(zd[i].a) > 0.0)) {
       g.failure = "singular zero dynamics: e_1^T M_s gamma <= 0 at grid point " + std::to_string(i) + " (theta = " +
                   std::to_string(ad::value(theta(i))) + " rad)";
@@ -134,6 +143,12 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
     }
     mu1(i) = -2.0 * zd[i].nu3 / zd[i].nu1;
     mu2(i) = zd[i].nu2 / zd[i].nu1;
+    hip.col(i) = point.hip;
+    swing_contact.col(i) = point.swing_contact;
+    if (m.has_feet()) stance_foot_angle(i) = point.stance_foot_angle;
+    if (i == 0 || i == P - 1)
+      (i == 0 ? unit_swing_velocity_plus : unit_swing_velocity_minus) =
+          swing_contact_velocity(m, stance_frame(m, q), slot_rates(m, gamma));
   }
   // Cumulative quadrature for iota (5.80, kept as its logarithm) and int mu2/iota (5.84).
   const Vector<T> log_iota = -cumulative_integral(mu1, h, opt.quadrature);
@@ -161,41 +176,42 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
       return g;
     }
 
-  // States on the grid (5.84, 5.86 with sigma = sqrt(2 zeta), 5.95-5.97) and time (5.96).
+  // States on the grid (5.84, 5.86 with sigma = sqrt(2 zeta), 5.95-5.97), torques (5.35) and
+  // contact force (5.14) from the affine forms of ConstrainedDynamics, and time (5.96).
   GaitTrajectory<T>& tr = g.trajectory;
   tr.theta = theta;
+  tr.hip = std::move(hip);
+  tr.swing_contact = std::move(swing_contact);
+  tr.stance_foot_angle = std::move(stance_foot_angle);
   tr.zeta.resize(P);
   tr.time.resize(P);
   tr.q.resize(nq, P);
   tr.q_dot.resize(nq, P);
-  tr.q_ddot.resize(nq, P);
+  tr.q_ddot.resize(nq, opt.keep_trajectories ? P : 0);  // only a trajectory output
   tr.torque.resize(nb, P);
   tr.contact_force.resize(2, P);
-  tr.hip.resize(2, P);
-  tr.swing_contact.resize(2, P);
-  tr.stance_foot_angle.resize(m.has_feet() ? P : 0);
   Vector<T> theta_dot(P);
-  Vec2<T> swing_velocity_plus = Vec2<T>::Zero(), swing_velocity_minus = Vec2<T>::Zero();
+  const Vec2<T> weight(T(0.0), T(m.total_mass * m.constants.gravity));
   for (int i = 0; i < P; ++i) {
     tr.zeta(i) = iota(i) * (g.zeta_plus + I(i));
     const T sigma = sqrt(2.0 * tr.zeta(i));  // eq. (5.86) prints 2 sqrt(zeta); zeta = sigma^2/2 (5.75) gives this
     theta_dot(i) = zd[i].nu1 * sigma;
-    const T theta_ddot = -(zd[i].b * theta_dot(i) * theta_dot(i) + zd[i].c) / zd[i].a;
+    const T theta_dot_sq = theta_dot(i) * theta_dot(i);
+    const T theta_ddot = -(zd[i].b * theta_dot_sq + zd[i].c) / zd[i].a;
     tr.q(0, i) = theta(i);
     tr.q.col(i).tail(nb) = qb.col(i);
     tr.q_dot(0, i) = theta_dot(i);
     tr.q_dot.col(i).tail(nb) = qb1.col(i) * theta_dot(i);
-    tr.q_ddot(0, i) = theta_ddot;
-    tr.q_ddot.col(i).tail(nb) = qb1.col(i) * theta_ddot + qb2.col(i) * (theta_dot(i) * theta_dot(i));
-    const CoordinateVector<T> qd = tr.q_dot.col(i), qdd = tr.q_ddot.col(i);
-    tr.torque.col(i) = generalized_forces(m, frames[i], qd, qdd).tail(nb);
-    tr.contact_force.col(i) = stance_contact_force(m, frames[i], qd, qdd);
-    tr.hip.col(i) = point_position(frames[i], m.hip);
-    tr.swing_contact.col(i) = swing_contact_point(m, frames[i]);
-    if (m.has_feet()) tr.stance_foot_angle(i) = frames[i].angle(seg_F1);
-    if (i == 0) swing_velocity_plus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
-    if (i == P - 1) swing_velocity_minus = swing_contact_velocity(m, frames[i], slot_rates(m, qd));
+    if (opt.keep_trajectories) {
+      tr.q_ddot(0, i) = theta_ddot;
+      tr.q_ddot.col(i).tail(nb) = qb1.col(i) * theta_ddot + qb2.col(i) * theta_dot_sq;
+    }
+    const ConstrainedDynamics<T>& cd = points[i].dynamics;
+    tr.torque.col(i) = cd.inertial.tail(nb) * theta_ddot + cd.coupled.tail(nb) * theta_dot_sq + cd.gravity.tail(nb);
+    tr.contact_force.col(i) = cd.force_inertial * theta_ddot + cd.force_coupled * theta_dot_sq + weight;
   }
+  const Vec2<T> swing_velocity_plus = unit_swing_velocity_plus * theta_dot(0);
+  const Vec2<T> swing_velocity_minus = unit_swing_velocity_minus * theta_dot(P - 1);
   tr.time = cumulative_integral(Vector<T>(theta_dot.cwiseInverse()), h, opt.quadrature);  // (5.96)
 
   // Step, speed, impact (the unit impact scales linearly with theta_dot-).
@@ -211,18 +227,23 @@ PeriodicGait<T> periodic_gait(const WalkerModel<T>& m, const BezierBasis& basis,
   // by the trapezoid rule in time (the seed's) or the corrected rule in theta (dt = d theta / theta_dot).
   const T weight_step = m.total_mass * T(m.constants.gravity) * g.step_length;
   const T c_A = T(m.constants.actuator_constant);
+  // Joint powers u_j q_dot_j and sum_j u_j^2 once per grid point.
+  Matrix<T> power(nb, P);
+  Vector<T> usq(P), dt(P - 1);
+  for (int i = 0; i < P; ++i) {
+    for (int j = 0; j < nb; ++j) power(j, i) = tr.torque(j, i) * tr.q_dot(1 + j, i);
+    usq(i) = ad::dot(tr.torque.col(i), tr.torque.col(i));
+  }
+  for (int i = 0; i + 1 < P; ++i) dt(i) = tr.time(i + 1) - tr.time(i);
   T e_mech = T(0.0), e_usq = T(0.0);
   for (int j = 0; j < nb; ++j)
-    for (int i = 0; i + 1 < P; ++i) {
-      const T dt = tr.time(i + 1) - tr.time(i);
-      const T p0 = tr.torque(j, i) * tr.q_dot(1 + j, i), p1 = tr.torque(j, i + 1) * tr.q_dot(1 + j, i + 1);
-      e_mech += detail::positive_part_trapezoid(p0, p1, dt);
-      if (opt.quadrature == Quadrature::trapezoid)
-        e_usq += 0.5 * c_A * (tr.torque(j, i) * tr.torque(j, i) + tr.torque(j, i + 1) * tr.torque(j, i + 1)) * dt;
-    }
-  if (opt.quadrature == Quadrature::corrected_trapezoid) {
+    for (int i = 0; i + 1 < P; ++i) e_mech += detail::positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
+  if (opt.quadrature == Quadrature::trapezoid) {
+    for (int i = 0; i + 1 < P; ++i) e_usq += (usq(i) + usq(i + 1)) * dt(i);
+    e_usq *= 0.5 * c_A;
+  } else {
     Vector<T> usq_per_theta(P);
-    for (int i = 0; i < P; ++i) usq_per_theta(i) = c_A * ad::dot(tr.torque.col(i), tr.torque.col(i)) / theta_dot(i);
+    for (int i = 0; i < P; ++i) usq_per_theta(i) = c_A * usq(i) / theta_dot(i);
     e_usq = cumulative_integral(usq_per_theta, h, opt.quadrature)(P - 1);
   }
   g.f_mech = e_mech / weight_step;

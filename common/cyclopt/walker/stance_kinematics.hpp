@@ -5,6 +5,10 @@
 //   segment j:     w = d e/d phi = [cos phi; -sin phi],  w' = -e(phi)
 //   rolling ankle: w = r'_A1 = [F'_A; F''_A],            w' = [F''_A; F'''_A]      (eq. 5.10)
 // so that every point velocity is sum_s L_s w_s u_s with slot rates u = slot_map * q_s_dot.
+//
+// Every function takes the model with its own scalar MT and the state with scalar T: a double
+// model with Dual or complex states keeps the model's constants plain doubles (products with them
+// cost N, not 3N, per Dual); with free model parameters MT = T.
 
 #include "cyclopt/walker/walker_model.hpp"
 
@@ -35,17 +39,25 @@ Vec2<T> direction(const T& phi) {
   return Vec2<T>(sin(phi), cos(phi));
 }
 
-// F_A(theta_F) = F(theta_F - theta_F,0) of the model's foot (eq. 5.4).
-template <class T>
-foot::RollingContact<T> foot_contact(const WalkerModel<T>& m, const T& theta_F) {
-  return foot::rolling_contact(m.foot, T(theta_F - m.foot_zero_angle));
+// F_A(theta_F) = F(theta_F - theta_F,0) of the model's foot (eq. 5.4). F depends on the one angle
+// only: for Dual angles on a double model, F..F''' and their theta-derivatives F'..F'''' come from
+// one pass with a single direction, chained with the angle's derivatives.
+template <class T, class MT>
+foot::RollingContact<T> foot_contact(const WalkerModel<MT>& m, const T& theta_F) {
+  if constexpr (ad::is_dual_v<T> && std::is_same_v<MT, double>) {
+    const auto c = foot::rolling_contact(m.foot, ad::Dual<1>::variable(theta_F.v - m.foot_zero_angle, 0));
+    auto chained = [&](const ad::Dual<1>& f) { return T(f.v, f.d(0) * theta_F.d); };
+    return {chained(c.F), chained(c.dF), chained(c.ddF), chained(c.dddF)};
+  } else {
+    return foot::rolling_contact(m.foot, T(theta_F - m.foot_zero_angle));
+  }
 }
 
 // slot_map * v for any coordinate-shaped v. slot_map holds a few entries 0, +-1, +-1/2: for
 // scalars carrying derivatives, scalar multiples of the nonzero ones avoid the casts and full
 // products of a dense product with slot_map cast to T; doubles keep Eigen's vectorised product.
-template <class T>
-SlotVector<T> slot_combination(const WalkerModel<T>& m, const CoordinateVector<T>& v) {
+template <class T, class MT>
+SlotVector<T> slot_combination(const WalkerModel<MT>& m, const CoordinateVector<T>& v) {
   if constexpr (std::is_same_v<T, double>) return m.slot_map * v;
   SlotVector<T> r(m.slot_count);
   for (int s = 0; s < m.slot_count; ++s) {
@@ -58,8 +70,8 @@ SlotVector<T> slot_combination(const WalkerModel<T>& m, const CoordinateVector<T
 }
 
 // slot_map^T * Q: slot forces to generalised forces (same scheme).
-template <class T>
-CoordinateVector<T> coordinate_combination(const WalkerModel<T>& m, const SlotVector<T>& Q) {
+template <class T, class MT>
+CoordinateVector<T> coordinate_combination(const WalkerModel<MT>& m, const SlotVector<T>& Q) {
   if constexpr (std::is_same_v<T, double>) return m.slot_map.transpose() * Q;
   CoordinateVector<T> r(m.slot_map.cols());
   for (int k = 0; k < r.size(); ++k) {
@@ -71,8 +83,8 @@ CoordinateVector<T> coordinate_combination(const WalkerModel<T>& m, const SlotVe
   return r;
 }
 
-template <class T>
-StanceFrame<T> stance_frame(const WalkerModel<T>& m, const CoordinateVector<T>& q) {
+template <class T, class MT>
+StanceFrame<T> stance_frame(const WalkerModel<MT>& m, const CoordinateVector<T>& q) {
   using std::cos, std::sin;
   StanceFrame<T> f;
   f.angle = slot_combination(m, q);
@@ -93,17 +105,18 @@ StanceFrame<T> stance_frame(const WalkerModel<T>& m, const CoordinateVector<T>& 
   return f;
 }
 
-// Position of a point given by its segment offsets from the stance ankle.
-template <class T>
-Vec2<T> point_position(const StanceFrame<T>& f, const SegmentOffsets<T>& offsets) {
+// Position of a point given by its segment offsets from the stance ankle (direction e(phi_s) =
+// -w'_s of the frame, so no angle is evaluated twice).
+template <class T, class MT>
+Vec2<T> point_position(const StanceFrame<T>& f, const SegmentOffsets<MT>& offsets) {
   Vec2<T> r = f.stance_ankle;
-  for (int s = 0; s < offsets.size(); ++s) r += offsets(s) * direction(f.angle(s));
+  for (int s = 0; s < offsets.size(); ++s) r -= offsets(s) * f.dw.col(s);
   return r;
 }
 
 // Velocity of that point for slot rates u (the rolling slot carries the ankle's own motion).
-template <class T>
-Vec2<T> point_velocity(const WalkerModel<T>& m, const StanceFrame<T>& f, const SegmentOffsets<T>& offsets,
+template <class T, class MT>
+Vec2<T> point_velocity(const WalkerModel<MT>& m, const StanceFrame<T>& f, const SegmentOffsets<MT>& offsets,
                        const SlotVector<T>& u) {
   Vec2<T> v = Vec2<T>::Zero();
   for (int s = 0; s < offsets.size(); ++s) v += offsets(s) * f.w.col(s) * u(s);
@@ -113,8 +126,8 @@ Vec2<T> point_velocity(const WalkerModel<T>& m, const StanceFrame<T>& f, const S
 
 // Potential contact point of the swing foot, C2 = A2 + F''_A e_x - F'_A e_z (eq. 5.5); for
 // point feet the swing ankle itself.
-template <class T>
-Vec2<T> swing_contact_point(const WalkerModel<T>& m, const StanceFrame<T>& f) {
+template <class T, class MT>
+Vec2<T> swing_contact_point(const WalkerModel<MT>& m, const StanceFrame<T>& f) {
   Vec2<T> c = point_position(f, m.swing_ankle);
   if (m.has_feet()) c += Vec2<T>(f.swing_foot.ddF, -f.swing_foot.dF);
   return c;
@@ -122,8 +135,8 @@ Vec2<T> swing_contact_point(const WalkerModel<T>& m, const StanceFrame<T>& f) {
 
 // Its velocity: the swing ankle's velocity minus theta_F2_dot [F'_A; F''_A] (a material point of
 // the rigid foot; equal to the rate of the lowest point because the sole is convex).
-template <class T>
-Vec2<T> swing_contact_velocity(const WalkerModel<T>& m, const StanceFrame<T>& f, const SlotVector<T>& u) {
+template <class T, class MT>
+Vec2<T> swing_contact_velocity(const WalkerModel<MT>& m, const StanceFrame<T>& f, const SlotVector<T>& u) {
   Vec2<T> v = point_velocity(m, f, m.swing_ankle, u);
   if (m.has_feet()) v -= u(seg_F2) * Vec2<T>(f.swing_foot.dF, f.swing_foot.ddF);
   return v;

@@ -31,9 +31,9 @@ struct VirtualConstraints {
 
 inline int gait_parameter_count(int joints, int degree) { return (degree - 1) * joints; }
 
-// Builds alpha_0..alpha_M, theta+- from x (eq. 5.55-5.62).
-template <class T, class Vector>
-VirtualConstraints<T> virtual_constraints(const WalkerModel<T>& m, const Vector& x) {
+// Builds alpha_0..alpha_M, theta+- from x (eq. 5.55-5.62); the scalar is that of model and x combined.
+template <class MT, class Vector, class T = ad::promoted_t<MT, typename Vector::Scalar>>
+VirtualConstraints<T> virtual_constraints(const WalkerModel<MT>& m, const Vector& x) {
   using std::acos, std::cos, std::sin, std::sqrt, std::atan2;
   using ad::atan2;
   const int nb = m.joint_count, M = m.constants.bezier_degree;
