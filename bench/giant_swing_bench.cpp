@@ -280,7 +280,7 @@ std::optional<Eigen::VectorXd> run_part_b(int free_coefficients) {
   // What Ipopt does without the difference Hessian (its limited-memory BFGS, history 6).
   MinimumJerkSettings limited_memory;
   limited_memory.problem.free_coefficients = free_coefficients;
-  limited_memory.solver.ipopt.difference_hessian = false;
+  limited_memory.solver.ipopt.hessian = cyclopt::nlp::IpoptHessian::limited_memory;
   std::printf("Ipopt with its limited-memory Hessian instead:\n");
   run_part_b_task(TaskKind::single_swing, limited_memory, false);
   std::printf("\n");

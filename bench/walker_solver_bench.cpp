@@ -5,7 +5,8 @@
 // usage: walker_solver_bench FOOT SPEED SOLVER [max_iterations] [name=value ...]
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
 //   options (integer, number or string, recognised in that order); the word difference_hessian
-//   sets SqpOptions::difference_hessian, the word f_usq the objective (5.101) instead of f_mech (5.102).
+//   sets SqpOptions::difference_hessian, difference_start IpoptOptions::difference_hessian_start, the word lbfgs Ipopt's limited-memory Hessian instead of the
+//   adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102).
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
   for (int k = 5; k < argc; ++k)
     if (std::string(argv[k]) == "difference_hessian")
       so.sqp.difference_hessian = true;
+    else if (std::string(argv[k]) == "difference_start")
+      so.ipopt.difference_hessian_start = true;
+    else if (std::string(argv[k]) == "lbfgs")
+      so.ipopt.hessian = nlp::IpoptHessian::limited_memory;
     else if (std::string(argv[k]) == "f_usq")
       po.objective = walker::Objective::squared_torque;
     else

@@ -1,8 +1,10 @@
 #include "cyclopt/nlp/ipopt_solver.hpp"
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
+#include "cyclopt/nlp/damped_bfgs.hpp"
 #include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
+#include "cyclopt/nlp/lagrangian_bfgs.hpp"
 
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
@@ -11,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -51,6 +54,8 @@ class ProblemTnlp : public Ipopt::TNLP {
         n_(problem.num_variables()),
         m_eq_(problem.num_equalities()),
         m_in_(problem.num_inequalities()),
+        bfgs_(problem.num_variables()),
+        restoration_bfgs_(problem.num_variables()),
         start_(Clock::now()) {}
 
   StopReason stop_reason() const { return stop_reason_; }
@@ -61,7 +66,7 @@ class ProblemTnlp : public Ipopt::TNLP {
     n = n_;
     m = m_eq_ + m_in_;
     nnz_jac_g = n * m;
-    nnz_h_lag = options_.ipopt.difference_hessian ? n * (n + 1) / 2 : 0;
+    nnz_h_lag = options_.ipopt.hessian == IpoptHessian::limited_memory ? 0 : n * (n + 1) / 2;
     index_style = C_STYLE;
     return true;
   }
@@ -79,10 +84,22 @@ class ProblemTnlp : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index, bool init_lambda,
-                          Number*) override {
-    if (!init_x || init_z || init_lambda) return false;
+  // Multipliers are asked for only with warm_start_init_point=yes, which the adapter sets when
+  // IpoptOptions::warm_start is given; Ipopt's z_L, z_U >= 0 are the parts of nu = z_U - z_L.
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number* z_L, Number* z_U, Index m,
+                          bool init_lambda, Number* lambda) override {
+    const std::optional<IpoptWarmStart>& warm = options_.ipopt.warm_start;
+    if (!init_x || ((init_z || init_lambda) && !warm)) return false;
     Eigen::Map<Eigen::VectorXd>(x, n) = x0_;
+    if (init_z) {
+      Eigen::Map<Eigen::VectorXd>(z_L, n) = (-warm->bound_multipliers).cwiseMax(0.0);
+      Eigen::Map<Eigen::VectorXd>(z_U, n) = warm->bound_multipliers.cwiseMax(0.0);
+    }
+    if (init_lambda) {
+      Eigen::Map<Eigen::VectorXd> out(lambda, m);
+      out.head(m_eq_) = warm->equality_multipliers;
+      out.tail(m_in_) = warm->inequality_multipliers;
+    }
     return true;
   }
 
@@ -120,6 +137,12 @@ class ProblemTnlp : public Ipopt::TNLP {
     Eigen::Map<RowMajor> jac(values, m, n);
     jac.topRows(m_eq_) = evaluator_.evaluation().equality_jacobian;
     jac.bottomRows(m_in_) = evaluator_.evaluation().inequality_jacobian;
+    if (options_.ipopt.hessian == IpoptHessian::damped_bfgs) {
+      // eval_h comes for this iterate after trial points may have replaced the cache: keep its
+      // derivatives instead of evaluating them a second time.
+      iterate_x_ = Eigen::Map<const Eigen::VectorXd>(x, n);
+      iterate_ = evaluator_.evaluation();
+    }
     return true;
   }
 
@@ -155,10 +178,9 @@ class ProblemTnlp : public Ipopt::TNLP {
     summary_.bound_multipliers = Eigen::Map<const Eigen::VectorXd>(z_U, n) - Eigen::Map<const Eigen::VectorXd>(z_L, n);
   }
 
-  // Dense lower triangle, row by row: entry k of row i, column j <= i.
-  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda, bool, Index,
-              Index* iRow, Index* jCol, Number* values) override {
-    if (!options_.ipopt.difference_hessian) return false;
+  // Lower triangle, row by row: entry k of row i is (i, k), k <= i.
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda, bool, Index, Index* iRow,
+              Index* jCol, Number* values) override {
     if (values == nullptr) {
       for (Index i = 0, k = 0; i < n; ++i)
         for (Index j = 0; j <= i; ++j, ++k) {
@@ -168,13 +190,32 @@ class ProblemTnlp : public Ipopt::TNLP {
       return true;
     }
     const Eigen::Map<const Eigen::VectorXd> point(x, n), multipliers(lambda, m);
-    if (!evaluate(n, x, true)) return false;
-    const Evaluation at = evaluator_.evaluation();
-    const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
-        evaluator_, point, at, multipliers.head(m_eq_), multipliers.tail(m_in_), obj_factor);
-    if (!H) return false;
+    if (options_.ipopt.hessian == IpoptHessian::difference) {
+      if (!evaluate(n, x, true)) return false;
+      const Evaluation at = evaluator_.evaluation();
+      const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
+          evaluator_, point, at, multipliers.head(m_eq_), multipliers.tail(m_in_), obj_factor);
+      if (!H) return false;
+      for (Index i = 0, k = 0; i < n; ++i)
+        for (Index j = 0; j <= i; ++j, ++k) values[k] = (*H)(i, j);
+      return true;
+    }
+    if (iterate_x_.size() != n || point != iterate_x_) {
+      if (!evaluate(n, x, true)) return false;
+      iterate_x_ = point;
+      iterate_ = evaluator_.evaluation();
+    }
+    if (options_.ipopt.difference_hessian_start && !difference_start_done_ && obj_factor > 0.0) {
+      difference_start_done_ = true;
+      if (const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
+              evaluator_, point, iterate_, multipliers.head(m_eq_) / obj_factor, multipliers.tail(m_in_) / obj_factor))
+        bfgs_.reset(obj_factor * clamped_hessian(*H));
+    }
+    // obj_factor = 0: Ipopt's restoration phase (feasibility problem, constraint curvature only).
+    LagrangianBfgs& bfgs = obj_factor > 0.0 ? bfgs_ : restoration_bfgs_;
+    const Eigen::MatrixXd& W = bfgs.at(point, iterate_, obj_factor, multipliers.head(m_eq_), multipliers.tail(m_in_));
     for (Index i = 0, k = 0; i < n; ++i)
-      for (Index j = 0; j <= i; ++j, ++k) values[k] = (*H)(i, j);
+      for (Index j = 0; j <= i; ++j, ++k) values[k] = W(i, j);
     return true;
   }
 
@@ -191,6 +232,10 @@ class ProblemTnlp : public Ipopt::TNLP {
   SolverSummary& summary_;
   CachedEvaluator evaluator_;
   const Index n_, m_eq_, m_in_;
+  LagrangianBfgs bfgs_, restoration_bfgs_;
+  bool difference_start_done_ = false;
+  Eigen::VectorXd iterate_x_;  // the last point of eval_jac_g or eval_h, and its derivatives
+  Evaluation iterate_;
   const Clock::time_point start_;
   StopReason stop_reason_ = StopReason::none;
 };
@@ -224,6 +269,18 @@ void apply_passthrough_options(const IpoptOptions& ipopt, Ipopt::OptionsList& o)
     if (!o.SetIntegerValue(name, value)) reject_option(name);
 }
 
+void check_warm_start(const IpoptWarmStart& warm, const Problem& problem) {
+  auto require = [](bool ok, const char* field, int size) {
+    if (!ok)
+      throw std::invalid_argument(std::string("SolverOptions.ipopt.warm_start.") + field + ": size must be " +
+                                  std::to_string(size));
+  };
+  require(warm.equality_multipliers.size() == problem.num_equalities(), "equality_multipliers", problem.num_equalities());
+  require(warm.inequality_multipliers.size() == problem.num_inequalities(), "inequality_multipliers",
+          problem.num_inequalities());
+  require(warm.bound_multipliers.size() == problem.num_variables(), "bound_multipliers", problem.num_variables());
+}
+
 }  // namespace
 
 SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0) {
@@ -239,8 +296,20 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
   Ipopt::OptionsList& o = *app->Options();
   o.SetIntegerValue("print_level", options.print_level);
   if (options.print_level == 0) o.SetStringValue("sb", "yes");  // no banner
-  o.SetStringValue("hessian_approximation", options.ipopt.difference_hessian ? "exact" : "limited-memory");
-  o.SetIntegerValue("limited_memory_max_history", options.ipopt.limited_memory_max_history);
+  if (options.ipopt.hessian == IpoptHessian::limited_memory) {
+    o.SetStringValue("hessian_approximation", "limited-memory");
+    o.SetIntegerValue("limited_memory_max_history", options.ipopt.limited_memory_max_history);
+  }
+  if (const std::optional<IpoptWarmStart>& warm = options.ipopt.warm_start) {
+    check_warm_start(*warm, problem);
+    // A start at a KKT point of a nearby problem: keep it (Ipopt's defaults push iterate and
+    // multipliers 1e-2 into the interior and restart at mu = 0.1, i.e. away from it).
+    o.SetStringValue("warm_start_init_point", "yes");
+    o.SetNumericValue("mu_init", warm->mu_init);
+    o.SetNumericValue("warm_start_bound_push", 1e-9);
+    o.SetNumericValue("warm_start_slack_bound_push", 1e-9);
+    o.SetNumericValue("warm_start_mult_bound_push", 1e-9);
+  }
   o.SetStringValue("mu_strategy", options.ipopt.mu_strategy);
   o.SetIntegerValue("max_iter", options.max_iterations);
   o.SetNumericValue("tol", options.optimality_tolerance);

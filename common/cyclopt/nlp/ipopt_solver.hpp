@@ -2,8 +2,10 @@
 // Ipopt 3.11 adapter: solves any nlp::Problem with Ipopt's interior-point method.
 //
 // - exact first derivatives from Problem::evaluate; the Jacobian is passed with a dense sparsity
-//   pattern; the Hessian is Ipopt's limited-memory approximation (no second derivatives needed), or
-//   (IpoptOptions::difference_hessian) differences of the exact gradients, dense lower triangle;
+//   pattern; no second derivatives needed: the Hessian of the Lagrangian is the adapter's dense
+//   damped BFGS passed through eval_h (default), forward differences of the exact gradients at every
+//   iteration (small problems), or Ipopt's limited-memory approximation (IpoptOptions::hessian);
+// - IpoptOptions::warm_start: x0 with multipliers, warm_start_init_point=yes, small mu_init;
 // - an evaluation failure (EvaluationStatus !ok, or a non-finite value) is returned as `false`
 //   from eval_*, so Ipopt cuts back the step (the seed's "no real solution", eq. 5.87);
 // - app->Initialize("") always: no stray ipopt.opt is read;

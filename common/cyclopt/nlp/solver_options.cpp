@@ -51,6 +51,7 @@ void validate(const SolverOptions& o) {
   require(o.ipopt.limited_memory_max_history >= 1, "ipopt.limited_memory_max_history", ">= 1");
   require(o.ipopt.mu_strategy == "monotone" || o.ipopt.mu_strategy == "adaptive", "ipopt.mu_strategy",
           "\"monotone\" or \"adaptive\"");
+  require(!o.ipopt.warm_start || o.ipopt.warm_start->mu_init > 0, "ipopt.warm_start.mu_init", "> 0");
   const SqpOptions& s = o.sqp;
   require(s.initial_penalty > 0, "sqp.initial_penalty", "> 0");
   require(s.penalty_increase > 1, "sqp.penalty_increase", "> 1");
