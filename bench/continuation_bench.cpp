@@ -3,8 +3,8 @@
 // corrector), (b) Ipopt warm starts at every 0.1 m/s (trivial predictor), (c) the trivial
 // predictor with the fixed step 0.2 m/s and the SQP corrector. Printed per method: corrector
 // iterations, QP-predictor steps, wall time, curve jumps, and per point the speed, curve id and
-// f_mech (progress per point on stderr). The seed starts from its second-best optimum x_2*; here the start is the SQP optimum
-// from the automatic starting gait.
+// f_mech (progress per point on stderr). The seed starts from its second-best optimum x_2*; here
+// the start is the SQP optimum from the automatic starting gait.
 //
 // usage: continuation_bench [foot = P1-barefoot-left-HM] [from = 1.3] [to = 2.3] [methods = qpsqp,ipopt,fixed]
 #include "cyclopt/continuation/continuation_solver.hpp"
@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   std::printf("continuation_bench on %s\n", cyclopt::bench::machine_line().c_str());
   const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
   const walker::GaitProblemOptions po{walker::Objective::mechanical, from, walker::Quadrature::trapezoid, {}};
-  const nlp::SolverOptions sqp = nlp::seed_table_6_2_options();
+  nlp::SolverOptions sqp = nlp::seed_table_6_2_options();
+  sqp.sqp.difference_hessian = true;  // W_1 of (6.24), the seed's choice (W_1 = I only for its fmincon comparison)
   const walker::GaitOptimum start = walker::optimise_gait(model, po, sqp);
   std::printf("foot %s, f_mech, start: SQP from the automatic starting gait at %.2f m/s: %s, f %.8f, %d iterations, %.1f s\n\n",
               foot_name.c_str(), from, nlp::to_string(start.summary.termination), start.summary.objective,
@@ -64,6 +65,9 @@ int main(int argc, char** argv) {
     o.fixed_step = m.fixed_step;
     o.corrector = sqp;
     o.corrector.solver = m.corrector;
+    // Ipopt may not converge on a rolling-foot point; a failing corrector would otherwise take
+    // MaxIter = 2000 iterations (~3 min) before the run reports it.
+    if (m.corrector == nlp::SolverKind::ipopt) o.corrector.max_wall_seconds = 60.0;
     results.push_back(continue_solution(family, start.z, grid, o, {}, [&m](const CurvePoint& p) {
       std::fprintf(stderr, "  [%s] v %.4f curve %d %s f %.6f, %d corrector iterations, %.1f s\n", m.key, p.parameter, p.curve_id,
                    p.converged ? "ok" : "failed", p.objective, p.corrector.iterations, p.seconds);

@@ -61,6 +61,9 @@ std::optional<Eigen::VectorXd> Sweep::multistart_at(double v) {
   mo.num_starts = o_.starts;
   mo.base_seed = o_.seed;
   mo.solver = o_.continuation.corrector;
+  // Solves from perturbed starting gaits start from W_1 of (6.24) - the seed's choice, W_1 = I is
+  // only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
+  mo.solver.sqp.difference_hessian = true;
   const nlp::MultistartResult m = nlp::multistart(
       [&] { return std::make_unique<walker::GaitProblem>(model_, po); },
       [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)); }, mo);
