@@ -45,13 +45,6 @@ double best_of(int repeats, F&& f, double budget) {
   return best;
 }
 
-Eigen::MatrixXd stacked(const GaitDerivatives& d) {
-  Eigen::MatrixXd J(8 + d.inequalities.rows(), d.objective.size());
-  J << d.objective, d.f_mech, d.f_usq, d.speed_equality, d.step_length, d.step_period, d.mean_speed, d.floquet,
-      d.inequalities;
-  return J;
-}
-
 // Largest |J_a - J_b| of a row relative to the row's largest |J_b| entry, over all rows.
 double row_relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   double worst = 0.0;
@@ -75,8 +68,8 @@ int jacobian_timings() {
     const double tv = best_of(5, [&] { ev.evaluate(start.x, opt); }, 0.2);
     const double tj = best_of(5, [&] { ev.evaluate_with_derivatives(start.x, opt); }, 0.3);
     const double tr = best_of(5, [&] { ev.evaluate_with_reference_derivatives(start.x, opt); }, 0.3);
-    const double diff = row_relative_difference(stacked(ev.evaluate_with_derivatives(start.x, opt).derivatives),
-                                                stacked(ev.evaluate_with_reference_derivatives(start.x, opt).derivatives));
+    const double diff = row_relative_difference(ev.evaluate_with_derivatives(start.x, opt).derivatives.stacked(),
+                                                ev.evaluate_with_reference_derivatives(start.x, opt).derivatives.stacked());
     std::printf("%-20s %4d %10.4f %14.3f %16.3f %14.2e\n", name, static_cast<int>(start.x.size()), tv * 1e3, tj * 1e3,
                 tr * 1e3, diff);
   }

@@ -1,6 +1,7 @@
 // Active-set QP solver against QPs with analytic solutions (incl. degenerate, infeasible,
 // semidefinite and unbounded ones) and KKT checks on randomized QPs.
 #include "cyclopt/qp/active_set_solver.hpp"
+#include "cyclopt/qp/dual_active_set_solver.hpp"
 #include "qp_kkt.hpp"
 #include "random_qp.hpp"
 
@@ -20,6 +21,7 @@ using cyclopt::qp::QpSolution;
 using cyclopt::qp::QpStatus;
 using cyclopt::qp::QuadraticProgram;
 using cyclopt::qp::solve_active_set;
+using cyclopt::qp::solve_dual_active_set;
 using cyclopt::qp::testing::expect_kkt;
 using cyclopt::qp::testing::random_qp;
 using cyclopt::qp::testing::unconstrained;
@@ -37,16 +39,6 @@ QuadraticProgram nocedal_wright_example_16_4() {
   return qp;
 }
 
-TEST(ActiveSetSolver, NocedalWrightExample16_4) {
-  const QuadraticProgram qp = nocedal_wright_example_16_4();
-  const QpSolution s = solve_active_set(qp);
-  expect_kkt(qp, s, 1e-12);
-  EXPECT_NEAR(s.x[0], 1.4, 1e-12);
-  EXPECT_NEAR(s.x[1], 1.7, 1e-12);
-  EXPECT_NEAR(s.inequality_multipliers[0], 0.8, 1e-12);
-  EXPECT_EQ(s.working_set.inequalities, std::vector<int>{0});
-}
-
 TEST(ActiveSetSolver, EqualityConstrainedLeastNorm) {
   const int n = 5;
   QuadraticProgram qp = unconstrained(MatrixXd::Identity(n, n), VectorXd::Zero(n));
@@ -58,29 +50,48 @@ TEST(ActiveSetSolver, EqualityConstrainedLeastNorm) {
   EXPECT_NEAR(s.equality_multipliers[0], -1.0 / n, 1e-12);
 }
 
+// Strictly convex cases with known solutions, for the primal method and the Goldfarb-Idnani dual
+// method (dual_active_set_solver.hpp) alike.
+using Solver = QpSolution (*)(const QuadraticProgram&, const ActiveSetOptions&);
+QpSolution primal(const QuadraticProgram& qp, const ActiveSetOptions& o) { return solve_active_set(qp, o); }
+
+class StrictlyConvexCases : public ::testing::TestWithParam<Solver> {};
+
+TEST_P(StrictlyConvexCases, NocedalWrightExample16_4) {
+  const QuadraticProgram qp = nocedal_wright_example_16_4();
+  const QpSolution s = GetParam()(qp, {});
+  expect_kkt(qp, s, 1e-12);
+  EXPECT_NEAR(s.x[0], 1.4, 1e-12);
+  EXPECT_NEAR(s.x[1], 1.7, 1e-12);
+  EXPECT_NEAR(s.inequality_multipliers[0], 0.8, 1e-12);
+  EXPECT_EQ(s.working_set.inequalities, std::vector<int>{0});
+}
+
 // Degenerate vertex: four constraints active at the origin in 2-D (two bounds, two redundant rows).
-TEST(ActiveSetSolver, DegenerateVertexWithRedundantActiveConstraints) {
+TEST_P(StrictlyConvexCases, DegenerateVertexWithRedundantActiveConstraints) {
   QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd::Constant(2, 2.0));  // (x+1)^2
   qp.inequality_matrix = (MatrixXd(3, 2) << -1, -1, -1, -2, -2, -2).finished();
   qp.inequality_rhs = VectorXd::Zero(3);
   qp.lower_bounds = VectorXd::Zero(2);
-  const QpSolution s = solve_active_set(qp);
+  const QpSolution s = GetParam()(qp, {});
   expect_kkt(qp, s, 1e-12);
   EXPECT_LE(s.x.norm(), 1e-12);
   EXPECT_LE(s.working_set.inequalities.size() + s.working_set.lower_bounds.size(), 2u);
 }
 
-TEST(ActiveSetSolver, RedundantEqualities) {
+TEST_P(StrictlyConvexCases, RedundantEqualities) {
   QuadraticProgram qp = unconstrained(MatrixXd::Identity(2, 2), VectorXd::Zero(2));
   qp.equality_matrix = (MatrixXd(3, 2) << 1, 1, 2, 2, -1, -1).finished();
   qp.equality_rhs = (VectorXd(3) << 1, 2, -1).finished();
-  const QpSolution s = solve_active_set(qp);
+  const QpSolution s = GetParam()(qp, {});
   expect_kkt(qp, s, 1e-12);
   EXPECT_NEAR(s.x[0], 0.5, 1e-12);
   EXPECT_NEAR(s.x[1], 0.5, 1e-12);
   qp.equality_rhs[1] = 3.0;  // now contradictory
-  EXPECT_EQ(solve_active_set(qp).status, QpStatus::infeasible);
+  EXPECT_EQ(GetParam()(qp, {}).status, QpStatus::infeasible);
 }
+
+INSTANTIATE_TEST_SUITE_P(PrimalAndDual, StrictlyConvexCases, ::testing::Values(&primal, &solve_dual_active_set));
 
 TEST(ActiveSetSolver, InfeasibleInequalitiesAndBounds) {
   QuadraticProgram qp = unconstrained(MatrixXd::Identity(2, 2), VectorXd::Zero(2));

@@ -1,6 +1,7 @@
 // Goldfarb-Idnani dual active-set solver (dual_active_set_solver.hpp): the same solutions as the
-// primal active-set solver on strictly convex QPs (random, degenerate, with redundant equalities,
-// walker-like many-row QPs), infeasibility detection, and the dispatch of solve_convex.
+// primal active-set solver on random and walker-like many-row strictly convex QPs, infeasibility
+// detection, and the dispatch of solve_convex. The small cases with known solutions (degenerate
+// vertex, redundant equalities) run for both solvers in test_active_set_solver.cpp.
 #include "cyclopt/qp/convex_solve.hpp"
 #include "cyclopt/qp/dual_active_set_solver.hpp"
 #include "qp_kkt.hpp"
@@ -30,44 +31,6 @@ using cyclopt::qp::testing::random_qp;
 using cyclopt::qp::testing::unconstrained;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-TEST(DualActiveSetSolver, NocedalWrightExample16_4) {
-  QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd((VectorXd(2) << -2, -5).finished()));
-  qp.inequality_matrix = (MatrixXd(3, 2) << -1, 2, 1, 2, 1, -2).finished();
-  qp.inequality_rhs = (VectorXd(3) << 2, 6, 2).finished();
-  qp.lower_bounds = VectorXd::Zero(2);
-  const QpSolution s = solve_dual_active_set(qp);
-  expect_kkt(qp, s, 1e-12);
-  EXPECT_NEAR(s.x[0], 1.4, 1e-12);
-  EXPECT_NEAR(s.x[1], 1.7, 1e-12);
-  EXPECT_NEAR(s.inequality_multipliers[0], 0.8, 1e-12);
-  EXPECT_EQ(s.working_set.inequalities, std::vector<int>{0});
-}
-
-// Four constraints active at the origin in 2-D (two bounds, two redundant rows): the dependent
-// ones never enter the working set.
-TEST(DualActiveSetSolver, DegenerateVertexWithRedundantActiveConstraints) {
-  QuadraticProgram qp = unconstrained(2.0 * MatrixXd::Identity(2, 2), VectorXd::Constant(2, 2.0));
-  qp.inequality_matrix = (MatrixXd(3, 2) << -1, -1, -1, -2, -2, -2).finished();
-  qp.inequality_rhs = VectorXd::Zero(3);
-  qp.lower_bounds = VectorXd::Zero(2);
-  const QpSolution s = solve_dual_active_set(qp);
-  expect_kkt(qp, s, 1e-12);
-  EXPECT_LE(s.x.norm(), 1e-12);
-  EXPECT_LE(s.working_set.inequalities.size() + s.working_set.lower_bounds.size(), 2u);
-}
-
-TEST(DualActiveSetSolver, RedundantAndContradictoryEqualities) {
-  QuadraticProgram qp = unconstrained(MatrixXd::Identity(2, 2), VectorXd::Zero(2));
-  qp.equality_matrix = (MatrixXd(3, 2) << 1, 1, 2, 2, -1, -1).finished();
-  qp.equality_rhs = (VectorXd(3) << 1, 2, -1).finished();
-  const QpSolution s = solve_dual_active_set(qp);
-  expect_kkt(qp, s, 1e-12);
-  EXPECT_NEAR(s.x[0], 0.5, 1e-12);
-  EXPECT_NEAR(s.x[1], 0.5, 1e-12);
-  qp.equality_rhs[1] = 3.0;
-  EXPECT_EQ(solve_dual_active_set(qp).status, QpStatus::infeasible);
-}
 
 TEST(DualActiveSetSolver, RejectsSemidefiniteHessianAndSolveConvexFallsBack) {
   // min 1/2 x1^2 - x2 s.t. x2 <= 3: zero curvature in x2.

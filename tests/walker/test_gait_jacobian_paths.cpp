@@ -14,13 +14,6 @@ namespace {
 
 using testing::kReferenceFeet;
 
-Eigen::MatrixXd stacked(const GaitDerivatives& d) {
-  Eigen::MatrixXd J(8 + d.inequalities.rows(), d.objective.size());
-  J << d.objective, d.f_mech, d.f_usq, d.speed_equality, d.step_length, d.step_period, d.mean_speed, d.floquet,
-      d.inequalities;
-  return J;
-}
-
 // Largest |J_a - J_b| of a row relative to the row's largest |J_b|, over all rows.
 double row_relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   double worst = 0.0;
@@ -36,7 +29,7 @@ double compare(const GaitEvaluator& ev, const Eigen::VectorXd& x, const GaitOpti
   const GaitEvaluation ref = ev.evaluate_with_reference_derivatives(x, opt, params);
   EXPECT_TRUE(fast.has_derivatives && ref.has_derivatives);
   EXPECT_EQ(fast.gait.objective, ref.gait.objective);  // the value pass is the same
-  const Eigen::MatrixXd Jf = stacked(fast.derivatives), Jr = stacked(ref.derivatives);
+  const Eigen::MatrixXd Jf = fast.derivatives.stacked(), Jr = ref.derivatives.stacked();
   EXPECT_EQ(Jf.cols(), ev.parameter_count() + static_cast<int>(params.size()));
   EXPECT_TRUE(Jf.allFinite());
   return row_relative_difference(Jf, Jr);

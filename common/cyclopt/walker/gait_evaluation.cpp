@@ -127,4 +127,10 @@ GaitEvaluation GaitEvaluator::derivatives(const Eigen::VectorXd& x, const GaitOp
   return out;
 }
 
+Eigen::MatrixXd GaitDerivatives::stacked() const {
+  Eigen::MatrixXd J(8 + inequalities.rows(), objective.size());
+  J << objective, f_mech, f_usq, speed_equality, step_length, step_period, mean_speed, floquet, inequalities;
+  return J;
+}
+
 }  // namespace cyclopt::walker
