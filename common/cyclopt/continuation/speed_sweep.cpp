@@ -82,7 +82,7 @@ bool Sweep::on_known_curve(double v, const Eigen::VectorXd& x, double f) const {
   return false;
 }
 
-// Continues one task; queues the backward continuation of every curve it jumps to.
+// Continues one task; queues the backward continuation of every new curve it jumps to.
 bool Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
   std::vector<double> grid{t.speed};
   for (double v : o_.speeds)
@@ -101,7 +101,9 @@ bool Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     if (j.to_curve >= o_.max_curves) continue;
     for (const CurvePoint& p : run.points)
       if (p.curve_id == j.to_curve && p.parameter == j.to_parameter) {
-        queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false});
+        // A jump onto a curve an earlier run already followed (the same optimum at the same speed)
+        // needs no second backward continuation.
+        if (!on_known_curve(p.parameter, p.x, p.objective)) queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false});
         break;
       }
   }
