@@ -95,7 +95,9 @@ bool Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     repeated = false;
     return skip || !on_point_ || on_point_(p);
   };
-  ContinuationResult run = continue_solution(family_, t.x, grid, o_.continuation, {t.curve_id, r_.curves}, forward);
+  ContinuationOptions continuation = o_.continuation;
+  continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
+  ContinuationResult run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
     if (j.to_curve >= o_.max_curves) continue;
@@ -167,6 +169,7 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   if (options.seed_speeds.empty()) throw std::invalid_argument("seed_speeds: need at least one speed");
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
+  if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
   return Sweep(model, problem, options, on_point).run();
 }
 

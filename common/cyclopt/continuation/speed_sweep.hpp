@@ -27,6 +27,11 @@ struct SpeedSweepOptions {
   double same_objective = 1e-6;
   double same_x = 1e-3;
   ContinuationOptions continuation;                 // for the multistart solves too (corrector)
+  // MaxIter of the corrector at each continuation point (the multistart solves keep
+  // continuation.corrector.max_iterations): a corrector that has not converged by then counts as
+  // failed and the trust region shrinks, instead of spending MaxIter = 2000 iterations per failing
+  // try (HMT P2 downwards near 0.46 m/s: ~16000 corrector iterations per run). >= 1.
+  int corrector_max_iterations = 300;
 };
 
 struct BestPoint {
