@@ -99,7 +99,7 @@ class SqpRun {
   double trust_radius_, min_trust_radius_, max_trust_radius_;
   double scalar_penalty_;  // max of the previous penalties, eq. (6.10)
   double q_reduction_ = 0.0;
-  double step_bound_ = std::numeric_limits<double>::infinity();  // box on d in (6.7), see line_search
+  double step_bound_ = kInfinity;  // box on d in (6.7), see line_search
   int short_steps_ = 0;  // consecutive accepted steps below kShortStep
 };
 
@@ -130,15 +130,16 @@ bool SqpRun::is_kkt_point() {
 
 // Step 3: the QP (6.7); penalties (6.9).
 std::optional<SearchDirection> SqpRun::search_direction() {
+  const qp::QuadraticProgram subproblem = sqp_subproblem(here(), W_);
   qp::QpSolution qp;
   if (std::isfinite(step_bound_)) {
-    qp::QuadraticProgram boxed = sqp_subproblem(here(), W_);
+    qp::QuadraticProgram boxed = subproblem;
     boxed.lower_bounds = boxed.lower_bounds.cwiseMax(-step_bound_);
     boxed.upper_bounds = boxed.upper_bounds.cwiseMin(step_bound_);
     qp = qp::solve_convex(boxed, sqp_.qp, working_set_, sqp_.screening);
     if (qp.status == qp::QpStatus::infeasible) step_bound_ = kInfinity;  // the box, not (6.7), may be incompatible
   }
-  if (!std::isfinite(step_bound_)) qp = qp::solve_convex(sqp_subproblem(here(), W_), sqp_.qp, working_set_, sqp_.screening);
+  if (!std::isfinite(step_bound_)) qp = qp::solve_convex(subproblem, sqp_.qp, working_set_, sqp_.screening);
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
