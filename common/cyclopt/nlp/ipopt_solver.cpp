@@ -37,6 +37,12 @@ constexpr Number kIpoptInfinity = 2e19;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// eval_h's values: the lower triangle of the symmetric H, row by row (the pattern eval_h declares).
+void write_lower_triangle(const Eigen::MatrixXd& H, Number* values) {
+  for (Index i = 0, k = 0; i < H.rows(); ++i)
+    for (Index j = 0; j <= i; ++j, ++k) values[k] = H(i, j);
+}
+
 Number finite_or_ipopt_infinity(double bound) {
   return std::isfinite(bound) ? bound : (bound > 0 ? kIpoptInfinity : -kIpoptInfinity);
 }
@@ -137,7 +143,7 @@ class ProblemTnlp : public Ipopt::TNLP {
     Eigen::Map<RowMajor> jac(values, m, n);
     jac.topRows(m_eq_) = evaluator_.evaluation().equality_jacobian;
     jac.bottomRows(m_in_) = evaluator_.evaluation().inequality_jacobian;
-    if (options_.ipopt.hessian == IpoptHessian::damped_bfgs) {
+    if (options_.ipopt.hessian != IpoptHessian::limited_memory) {
       // eval_h comes for this iterate after trial points may have replaced the cache: keep its
       // derivatives instead of evaluating them a second time.
       iterate_x_ = Eigen::Map<const Eigen::VectorXd>(x, n);
@@ -190,20 +196,17 @@ class ProblemTnlp : public Ipopt::TNLP {
       return true;
     }
     const Eigen::Map<const Eigen::VectorXd> point(x, n), multipliers(lambda, m);
-    if (options_.ipopt.hessian == IpoptHessian::difference) {
-      if (!evaluate(n, x, true)) return false;
-      const Evaluation at = evaluator_.evaluation();
-      const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
-          evaluator_, point, at, multipliers.head(m_eq_), multipliers.tail(m_in_), obj_factor);
-      if (!H) return false;
-      for (Index i = 0, k = 0; i < n; ++i)
-        for (Index j = 0; j <= i; ++j, ++k) values[k] = (*H)(i, j);
-      return true;
-    }
     if (iterate_x_.size() != n || point != iterate_x_) {
       if (!evaluate(n, x, true)) return false;
       iterate_x_ = point;
       iterate_ = evaluator_.evaluation();
+    }
+    if (options_.ipopt.hessian == IpoptHessian::difference) {
+      const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
+          evaluator_, point, iterate_, multipliers.head(m_eq_), multipliers.tail(m_in_), obj_factor);
+      if (!H) return false;
+      write_lower_triangle(*H, values);
+      return true;
     }
     if (options_.ipopt.difference_hessian_start && !difference_start_done_ && obj_factor > 0.0) {
       difference_start_done_ = true;
@@ -213,9 +216,7 @@ class ProblemTnlp : public Ipopt::TNLP {
     }
     // obj_factor = 0: Ipopt's restoration phase (feasibility problem, constraint curvature only).
     LagrangianBfgs& bfgs = obj_factor > 0.0 ? bfgs_ : restoration_bfgs_;
-    const Eigen::MatrixXd& W = bfgs.at(point, iterate_, obj_factor, multipliers.head(m_eq_), multipliers.tail(m_in_));
-    for (Index i = 0, k = 0; i < n; ++i)
-      for (Index j = 0; j <= i; ++j, ++k) values[k] = W(i, j);
+    write_lower_triangle(bfgs.at(point, iterate_, obj_factor, multipliers.head(m_eq_), multipliers.tail(m_in_)), values);
     return true;
   }
 
@@ -234,7 +235,7 @@ class ProblemTnlp : public Ipopt::TNLP {
   const Index n_, m_eq_, m_in_;
   LagrangianBfgs bfgs_, restoration_bfgs_;
   bool difference_start_done_ = false;
-  Eigen::VectorXd iterate_x_;  // the last point of eval_jac_g or eval_h, and its derivatives
+  Eigen::VectorXd iterate_x_;  // the last point of eval_jac_g or eval_h (exact-Hessian modes), and its derivatives
   Evaluation iterate_;
   const Clock::time_point start_;
   StopReason stop_reason_ = StopReason::none;
