@@ -7,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace cyclopt::testing {
 
@@ -23,6 +27,28 @@ class MemqServerTest : public ::testing::Test {
     ASSERT_TRUE(lcm_.good());
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // Runs one job on a server of its own: submits, waits for completion and returns the stored
+  // solution rows (expected_points < 0: any number).
+  std::vector<nlohmann::json> run_job(const std::string& id, const nlohmann::json& spec, int expected_points) {
+    server::Server srv(config_, kinds_, lcm_);
+    const auto ack = client_.submit(id, spec.dump(), 5.0);
+    EXPECT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
+    if (!ack || !ack->accepted) return {};
+    const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
+    EXPECT_TRUE(done);
+    if (!done) return {};
+    EXPECT_EQ(done->state, "done") << done->error;
+    if (expected_points >= 0) {
+      EXPECT_EQ(done->points_stored, expected_points);
+    }
+    const auto page = client_.query(storage::query_for("solutions", ack->job_id), 5.0);
+    EXPECT_TRUE(page);
+    std::vector<nlohmann::json> rows;
+    if (page)
+      for (const nlohmann::json& r : page->rows) rows.push_back(r);
+    return rows;
+  }
 
   std::filesystem::path dir_;
   server::ServerConfig config_;

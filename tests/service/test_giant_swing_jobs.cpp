@@ -56,18 +56,9 @@ TEST(GiantSwingJobSpec, RejectsBadFieldsNamingThem) {
 class GiantSwingJobs : public testing::MemqServerTest {
  protected:
   nlohmann::json run_one(const std::string& id, const nlohmann::json& spec) {
-    server::Server srv(config_, kinds_, lcm_);
-    const auto ack = client_.submit(id, spec.dump(), 5.0);
-    EXPECT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
-    if (!ack || !ack->accepted) return {};
-    const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
-    EXPECT_TRUE(done);
-    if (!done) return {};
-    EXPECT_EQ(done->state, "done") << done->error;
-    EXPECT_EQ(done->points_stored, 1);
-    const auto page = client_.query(storage::query_for("solutions", ack->job_id), 5.0);
-    EXPECT_TRUE(page && page->rows.size() == 1);
-    return page && page->rows.size() == 1 ? page->rows[0] : nlohmann::json();
+    const std::vector<nlohmann::json> rows = run_job(id, spec, 1);
+    EXPECT_EQ(rows.size(), 1u);
+    return rows.size() == 1 ? rows[0] : nlohmann::json();
   }
 };
 

@@ -17,32 +17,10 @@ nlohmann::json walker_spec(const std::string& task) {
           {"solver", {{"max_iterations", 600}}}};
 }
 
-class WalkerJobs : public testing::MemqServerTest {
- protected:
-  // Submits, waits for completion and returns the stored solution rows (expected_points < 0: any).
-  std::vector<nlohmann::json> run(const std::string& id, const nlohmann::json& spec, int expected_points) {
-    server::Server srv(config_, kinds_, lcm_);
-    const auto ack = client_.submit(id, spec.dump(), 5.0);
-    EXPECT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
-    if (!ack || !ack->accepted) return {};
-    const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
-    EXPECT_TRUE(done);
-    if (!done) return {};
-    EXPECT_EQ(done->state, "done") << done->error;
-    if (expected_points >= 0) {
-      EXPECT_EQ(done->points_stored, expected_points);
-    }
-    const auto page = client_.query(storage::query_for("solutions", ack->job_id), 5.0);
-    EXPECT_TRUE(page);
-    std::vector<nlohmann::json> rows;
-    if (page)
-      for (const nlohmann::json& r : page->rows) rows.push_back(r);
-    return rows;
-  }
-};
+using WalkerJobs = testing::MemqServerTest;
 
 TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
-  const auto rows = run("eval-1", walker_spec("evaluate"), 1);
+  const auto rows = run_job("eval-1", walker_spec("evaluate"), 1);
   ASSERT_EQ(rows.size(), 1u);
   std::printf("evaluate row: %s\n", rows[0].dump().substr(0, 300).c_str());
   const nlohmann::json values = rows[0]["values"];
@@ -52,7 +30,7 @@ TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
 }
 
 TEST_F(WalkerJobs, OptimiseLowersTheCostOfTransport) {
-  const auto rows = run("opt-1", walker_spec("optimise"), 1);
+  const auto rows = run_job("opt-1", walker_spec("optimise"), 1);
   ASSERT_EQ(rows.size(), 1u);
   const nlohmann::json values = rows[0]["values"];
   const double start = values["start_objective"].get<double>(), end = values["gait"]["objective"].get<double>();
@@ -67,7 +45,7 @@ TEST_F(WalkerJobs, ContinuationStoresEveryPointWithItsCurve) {
   nlohmann::json spec = walker_spec("continuation");
   spec.erase("speed");
   spec["speeds"] = "1.0:0.1:1.2";
-  const auto rows = run("cont-1", spec, -1);
+  const auto rows = run_job("cont-1", spec, -1);
   ASSERT_GE(rows.size(), 3u);
   int on_grid = 0;
   for (const auto& r : rows) {
@@ -90,7 +68,7 @@ TEST_F(WalkerJobs, SweepSelectsTheBestPointPerSpeed) {
   spec["speeds"] = "0.9:0.1:1.1";
   spec["multistart"] = {{"starts", 2}, {"seed", 3}, {"scale", 0.02}};
   spec["continuation"] = {{"seed_speeds", 1.0}};
-  const auto rows = run("sweep-1", spec, -1);
+  const auto rows = run_job("sweep-1", spec, -1);
   int best = 0;
   for (const auto& r : rows) {
     if (r["curve"].get<int>() != 0) continue;
