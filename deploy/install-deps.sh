@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package that cyclopt's build, tests and benchmarks need.
 # Idempotent; run as root (or with sudo). Packages come only from Debian's archive.
+#   --slurm  also Slurm and munge, for the Slurm executor's integration test (CI passes it; without
+#            them that test is skipped)
 set -euo pipefail
 
 packages=(
@@ -16,6 +18,9 @@ packages=(
   libbenchmark-dev              # benchmarks
   iproute2 util-linux           # ip / unshare for network-namespace integration tests
 )
+if [ "${1:-}" = "--slurm" ]; then
+  packages+=(slurmctld slurmd slurm-client munge)  # single-node test cluster: deploy/slurm/local-cluster.sh
+fi
 
 missing=()
 for p in "${packages[@]}"; do

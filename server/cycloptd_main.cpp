@@ -4,6 +4,7 @@
 #include "server_config.hpp"
 
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cycloptd: %s\n%s", e.what(), server::kServerUsage);
     return 1;
   }
+  if (config.executor == "slurm" && config.slurm.worker.empty())
+    config.slurm.worker = (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "cyclopt-worker").string();
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigaction(SIGTERM, &sa, nullptr);
@@ -43,8 +46,8 @@ int main(int argc, char** argv) {
   const service::JobKindRegistry kinds = service::builtin_job_kinds();
   try {
     server::Server srv(config, kinds, lcm);
-    std::fprintf(stderr, "cycloptd: database %s, %d workers, tasks:", config.database.c_str(),
-                 server::effective_workers(config));
+    std::fprintf(stderr, "cycloptd: database %s, %d workers (%s executor), tasks:", config.database.c_str(),
+                 server::effective_workers(config), config.executor.c_str());
     for (const auto& t : kinds.tasks()) std::fprintf(stderr, " %s", t.c_str());
     std::fprintf(stderr, "; re-queued %d interrupted job(s), cancelled %d\n", srv.recovery().requeued,
                  srv.recovery().cancelled);

@@ -5,6 +5,7 @@
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
+#include "job_executor.hpp"
 #include "lcm_publisher.hpp"
 #include "request_handler.hpp"
 #include "server_config.hpp"
@@ -13,6 +14,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
+#include <memory>
 
 namespace cyclopt::server {
 
@@ -32,6 +34,7 @@ class Server {
   storage::ResultStore store_;
   storage::RecoverySummary recovery_;
   LcmPublisher publisher_;
+  std::unique_ptr<JobExecutor> executor_;  // local threads or Slurm (config.executor)
   WorkerPool pool_;
   RequestHandler handler_;
 };

@@ -12,6 +12,23 @@ namespace cyclopt::server {
 
 namespace {
 
+// One key of the "slurm" object.
+void apply_slurm(remote::SlurmOptions& o, const std::string& key, const nlohmann::json& v) {
+  using namespace service;
+  const std::string field = "slurm." + key;
+  if (key == "spool") o.spool = string_value(v, field, 4096);
+  else if (key == "worker") o.worker = string_value(v, field, 4096);
+  else if (key == "partition") o.partition = string_value(v, field, 256);
+  else if (key == "account") o.account = string_value(v, field, 256);
+  else if (key == "cpus_per_unit") o.cpus_per_unit = integer_value(v, field, 1, 1024);
+  else if (key == "time_limit_minutes") o.time_limit_minutes = integer_value(v, field, 0, 525600);
+  else if (key == "max_submissions") o.max_submissions = integer_value(v, field, 1, 100);
+  else if (key == "poll_seconds") o.poll_seconds = number_value(v, field, 0.05, 60.0);
+  else
+    throw SpecError(field, "unknown setting (spool, worker, partition, account, cpus_per_unit, time_limit_minutes, "
+                           "max_submissions, poll_seconds)");
+}
+
 // One setting, read from a JSON value (file) or converted from a flag's text.
 void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
   using namespace service;
@@ -21,7 +38,16 @@ void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
   else if (key == "max_job_seconds") c.caps.max_wall_seconds = number_value(v, key, 1e-3, 7 * 86400.0);
   else if (key == "max_job_iterations") c.caps.max_iterations = integer_value(v, key, 1, 1000000000);
   else if (key == "progress_hz") c.progress_hz = number_value(v, key, 0.1, 100.0);
-  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, progress_hz)");
+  else if (key == "executor") {
+    c.executor = string_value(v, key, 16);
+    if (c.executor != "local" && c.executor != "slurm") throw SpecError(key, "must be local or slurm");
+  } else if (key == "slurm") {
+    if (!v.is_object()) throw SpecError(key, "must be an object of Slurm settings");
+    for (const auto& [k, value] : v.items()) apply_slurm(c.slurm, k, value);
+  } else if (key == "slurm_spool") c.slurm.spool = string_value(v, key, 4096);
+  else
+    throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, "
+                         "progress_hz, executor, slurm)");
 }
 
 }  // namespace
@@ -48,7 +74,7 @@ ServerConfig server_config_from_args(const std::vector<std::string>& args) {
     std::string key = a.substr(2);
     for (char& ch : key)
       if (ch == '-') ch = '_';
-    const bool text = key == "database" || key == "lcm_url";
+    const bool text = key == "database" || key == "lcm_url" || key == "executor" || key == "slurm_spool";
     nlohmann::json v = text ? nlohmann::json(value) : nlohmann::json::parse(value, nullptr, false);
     if (v.is_discarded()) v = value;  // reported as a type error by apply()
     apply(c, key, v);

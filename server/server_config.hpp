@@ -2,9 +2,13 @@
 // cycloptd's settings: defaults, then a JSON config file (--config), then command-line flags.
 //
 //   {"database": "cyclopt.db", "lcm_url": "udpm://239.255.76.67:7667?ttl=0", "workers": 2,
-//    "max_job_seconds": 3600, "max_job_iterations": 100000, "progress_hz": 5}
+//    "max_job_seconds": 3600, "max_job_iterations": 100000, "progress_hz": 5,
+//    "executor": "slurm", "slurm": {"spool": "/shared/cyclopt-spool", "partition": "batch", "account": "lab",
+//                                   "cpus_per_unit": 2, "time_limit_minutes": 120, "max_submissions": 4,
+//                                   "poll_seconds": 0.5, "worker": "/usr/local/bin/cyclopt-worker"}}
 
 #include "cyclopt/service/job_context.hpp"
+#include "remote/slurm_options.hpp"
 
 #include <string>
 #include <vector>
@@ -17,6 +21,8 @@ struct ServerConfig {
   int workers = 0;      // 0: one per core
   service::JobLimits caps;  // per-job time and iteration limits (specs may only lower them)
   double progress_hz = 5.0;  // progress messages per second and job, at most
+  std::string executor = "local";  // local: worker threads run the jobs; slurm: workers dispatch them to Slurm
+  remote::SlurmOptions slurm;      // with executor "slurm"
 };
 
 // Throws std::invalid_argument naming the key and the admissible range.
@@ -28,19 +34,25 @@ int effective_workers(const ServerConfig& c);
 
 inline constexpr const char* kServerUsage = R"(usage: cycloptd [--config FILE.json] [--database FILE] [--lcm-url URL] [--workers N]
                 [--max-job-seconds S] [--max-job-iterations N] [--progress-hz HZ]
+                [--executor local|slurm] [--slurm-spool DIR]
 
 The cyclopt job server: queues jobs submitted over LCM, runs them on one worker per core, stores
 every solved point in SQLite (WAL) and publishes progress. SIGTERM / SIGINT stop it gracefully:
 running jobs are checkpointed (their stored points kept) and resume at the next start.
 
   --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
-                         max_job_iterations, progress_hz (flags given after it override it)
+                         max_job_iterations, progress_hz, executor, slurm (flags given after it
+                         override it)
   --database FILE        results database (default cyclopt.db; created if missing)
   --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)
   --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600)
   --max-job-iterations N per-job iteration cap, 1..1e9 (default 100000)
   --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
+  --executor E           local (default: the workers compute the jobs) or slurm (each worker
+                         dispatches its job to Slurm as a batch job of cyclopt-worker; further
+                         settings in the config file's "slurm" object, see README)
+  --slurm-spool DIR      directory shared with the cluster nodes (required with slurm)
 Exit codes: 0 clean shutdown, 1 bad usage or config, 2 database or LCM failure.
 )";
 

@@ -12,9 +12,9 @@
 
 namespace cyclopt::server {
 
-WorkerPool::WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+WorkerPool::WorkerPool(const ServerConfig& config, const JobExecutor& executor, storage::ResultStore& store,
                        LcmPublisher& publisher)
-    : config_(config), kinds_(kinds), store_(store), publisher_(publisher) {
+    : config_(config), executor_(executor), store_(store), publisher_(publisher) {
   for (int i = 0; i < effective_workers(config); ++i) threads_.emplace_back([this] { work(); });
 }
 
@@ -68,9 +68,7 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
                        *cancel, shutdown_);
   std::string error;
   try {
-    const service::JobKind* kind = kinds_.find(job.task);
-    if (!kind) throw std::runtime_error("task '" + job.task + "' is not available on this server");
-    kind->run(spec, ctx);
+    executor_.run(job, spec, ctx);
   } catch (const std::exception& e) {
     error = e.what();
   } catch (...) {

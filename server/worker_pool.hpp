@@ -1,9 +1,9 @@
 #pragma once
-// One thread per worker. Each claims the oldest queued job from the store, runs its kind with a
-// WorkerJobContext and records the outcome: done, failed (exception or limit), cancelled, or
+// One thread per worker. Each claims the oldest queued job from the store, runs it through the
+// executor (job_executor.hpp: on this thread, or on Slurm) with a WorkerJobContext and records the outcome: done, failed (exception or limit), cancelled, or
 // back to queued when the server shuts down (its stored points are kept; it resumes later).
 
-#include "cyclopt/service/job_kind.hpp"
+#include "job_executor.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
 #include "server_config.hpp"
@@ -21,7 +21,7 @@ namespace cyclopt::server {
 
 class WorkerPool {
  public:
-  WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+  WorkerPool(const ServerConfig& config, const JobExecutor& executor, storage::ResultStore& store,
              LcmPublisher& publisher);
   ~WorkerPool();  // stop() and join
 
@@ -34,7 +34,7 @@ class WorkerPool {
   void run_job(const storage::JobRecord& job);
 
   const ServerConfig& config_;
-  const service::JobKindRegistry& kinds_;
+  const JobExecutor& executor_;
   storage::ResultStore& store_;
   LcmPublisher& publisher_;
   std::atomic<bool> shutdown_{false};

@@ -1,0 +1,50 @@
+// cyclopt-worker: computes one work unit that cycloptd handed out through a spool directory
+// (remote/unit_spool.hpp), e.g. as a Slurm batch job. It runs the unit's job kind exactly as a
+// server worker thread would and leaves every point, curve and progress report in the spool.
+//
+//   cyclopt-worker --unit DIR
+//
+// Exit codes: 0 the kind returned (done.json says whether it stopped early or failed),
+// 1 bad usage, 2 the unit could not be read or written.
+#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "remote/file_job_context.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+int main(int argc, char** argv) {
+  using namespace cyclopt;
+  if (argc != 3 || std::strcmp(argv[1], "--unit") != 0) {
+    std::fputs("usage: cyclopt-worker --unit DIR\n", stderr);
+    return 1;
+  }
+  const server::remote::UnitSpool spool(argv[2]);
+  try {
+    spool.write_started(std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
+    const server::remote::UnitSpec unit = spool.read_spec();
+    const nlohmann::json spec = nlohmann::json::parse(unit.spec_json, nullptr, false);
+    if (spec.is_discarded()) throw std::runtime_error("unit.json: the job spec is not valid JSON");
+    const service::JobKindRegistry kinds = service::builtin_job_kinds();
+    server::remote::FileJobContext ctx(spool, unit, 2.0);
+    server::remote::UnitOutcome outcome;
+    try {
+      const service::JobKind* kind = kinds.find(unit.task);
+      if (!kind) throw std::runtime_error("task '" + unit.task + "' is not available in this cyclopt-worker");
+      kind->run(spec, ctx);
+    } catch (const std::exception& e) {
+      outcome.error = e.what();
+    }
+    outcome.stop = ctx.stop_reason();
+    spool.write_outcome(outcome);
+    std::fprintf(stderr, "cyclopt-worker: job %lld unit %s: %s\n", static_cast<long long>(unit.job_id), argv[2],
+                 outcome.error.empty() ? service::to_string(outcome.stop) : outcome.error.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-worker: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,198 @@
+#include "slurm_executor.hpp"
+
+#include "command.hpp"
+#include "unit_spool.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace cyclopt::server::remote {
+
+namespace {
+
+// How long a worker asked to stop (cancel file) may take before scancel ends it.
+constexpr double kCancelGraceSeconds = 5.0;
+
+std::string hex64(std::uint64_t v) {
+  char s[17];
+  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(v));
+  return s;
+}
+
+// FNV-1a: ids of the same job id in two databases that share a spool differ by request id.
+std::uint64_t fnv1a(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
+  const auto first = s.find_first_not_of(' ');
+  return first == std::string::npos ? "" : s.substr(first);
+}
+
+bool active(const std::string& state) {
+  for (const char* s : {"PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "REQUEUED", "REQUEUE_HOLD",
+                        "REQUEUE_FED", "RESIZING", "SIGNALING", "STAGE_OUT", "STOPPED"})
+    if (state == s) return true;
+  return false;
+}
+
+// The Slurm job of this unit still in the controller's memory (any state), by job name.
+struct SlurmJob {
+  std::string id;
+  std::string state;
+};
+
+std::optional<SlurmJob> find_by_name(const std::string& name) {
+  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-n", name, "-o", "%i %T"});
+  if (r.exit_code != 0) return std::nullopt;
+  std::istringstream lines(r.output);
+  std::string line;
+  std::optional<SlurmJob> found;
+  while (std::getline(lines, line)) {
+    std::istringstream f(line);
+    SlurmJob j;
+    if (f >> j.id >> j.state && (!found || active(j.state))) found = j;  // an active one wins
+  }
+  return found;
+}
+
+// "" once the controller has forgotten the job (MinJobAge after its end).
+std::string slurm_state(const std::string& id) {
+  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-j", id, "-o", "%T"});
+  return r.exit_code == 0 ? trim(r.output) : "";
+}
+
+class Unit {
+ public:
+  Unit(const SlurmOptions& options, const storage::JobRecord& job, service::JobContext& ctx)
+      : options_(options),
+        job_(job),
+        ctx_(ctx),
+        name_("cyclopt-" + std::to_string(job.id) + "-" + hex64(fnv1a(job.request_id)).substr(0, 8)),
+        spool_(std::filesystem::path(options.spool) / name_) {}
+
+  void run() {
+    spool_.create();
+    if (const auto existing = find_by_name(name_); existing && active(existing->state)) {
+      slurm_id_ = existing->id;  // still queued or running from before a server restart
+      std::fprintf(stderr, "cycloptd: job %lld re-attached to Slurm job %s (%s)\n", static_cast<long long>(job_.id),
+                   slurm_id_.c_str(), existing->state.c_str());
+    } else {
+      ingest();
+      if (const auto outcome = spool_.read_outcome()) return finish(*outcome);  // ended while the server was down
+      submit();
+    }
+    for (;;) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
+      ingest();
+      if (const auto p = spool_.read_progress()) ctx_.report_progress(*p);
+      const service::StopReason stop = ctx_.stop_reason();
+      if (stop == service::StopReason::shutdown) return;  // the unit keeps running; re-attached at restart
+      if (stop != service::StopReason::none) return stop_unit();
+      const std::string state = slurm_state(slurm_id_);
+      if (active(state)) continue;
+      ingest();
+      if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
+      if (submissions_ >= options_.max_submissions)
+        throw std::runtime_error("Slurm unit " + name_ + " (Slurm job " + slurm_id_ + ") ended " +
+                                 (state.empty() ? "with an unknown state" : state) + " without a result after " +
+                                 std::to_string(submissions_) + " submission(s)");
+      std::fprintf(stderr, "cycloptd: job %lld: Slurm job %s ended %s without a result; resubmitting\n",
+                   static_cast<long long>(job_.id), slurm_id_.c_str(), state.c_str());
+      submit();
+    }
+  }
+
+ private:
+  void submit() {
+    UnitSpec spec;
+    spec.job_id = job_.id;
+    spec.task = job_.task;
+    spec.spec_json = job_.spec_json;
+    spec.limits = ctx_.limits();
+    spec.run_seconds_before = job_.run_seconds;
+    spec.submitted_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    spool_.write_spec(spec);
+    spool_.write_stored_keys(ctx_.already_stored_points());
+    spool_.clear_run_state();
+    const double remaining = std::max(1.0, spec.limits.max_wall_seconds - spec.run_seconds_before);
+    int minutes = static_cast<int>(std::ceil(remaining / 60.0)) + 1;
+    if (options_.time_limit_minutes > 0) minutes = std::min(minutes, options_.time_limit_minutes);
+    std::vector<std::string> argv{"sbatch",
+                                  "--parsable",
+                                  "--job-name=" + name_,
+                                  "--output=" + (spool_.dir() / "slurm-%j.out").string(),
+                                  "--cpus-per-task=" + std::to_string(options_.cpus_per_unit),
+                                  "--time=" + std::to_string(minutes),
+                                  "--export=ALL"};
+    if (!options_.partition.empty()) argv.push_back("--partition=" + options_.partition);
+    if (!options_.account.empty()) argv.push_back("--account=" + options_.account);
+    argv.push_back("--wrap=exec '" + options_.worker + "' --unit '" + spool_.dir().string() + "'");
+    const CommandResult r = run_command(argv);
+    const std::string id = trim(r.output.substr(0, r.output.find(';')));
+    if (r.exit_code != 0 || id.empty())
+      throw std::runtime_error("sbatch failed for Slurm unit " + name_ + " (exit " + std::to_string(r.exit_code) + ")");
+    slurm_id_ = id;
+    ++submissions_;
+  }
+
+  // Events are ingested in order; a re-read from 0 after a restart changes nothing (keyed).
+  void ingest() {
+    for (auto& [n, e] : spool_.read_events(next_event_)) {
+      switch (e.type) {
+        case UnitEvent::Type::announce: ctx_.announce(e.points_total); break;
+        case UnitEvent::Type::curve: ctx_.add_curve(e.curve_index, e.curve_name, e.parameter_name); break;
+        case UnitEvent::Type::point: ctx_.store_point(e.point); break;
+      }
+      next_event_ = n + 1;
+    }
+  }
+
+  void stop_unit() {
+    spool_.request_cancel();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kCancelGraceSeconds);
+    while (std::chrono::steady_clock::now() < deadline && active(slurm_state(slurm_id_)))
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (active(slurm_state(slurm_id_))) run_command({"scancel", slurm_id_});
+    ingest();
+  }
+
+  void finish(const UnitOutcome& outcome) {
+    if (!outcome.error.empty()) throw std::runtime_error(outcome.error);
+  }
+
+  const SlurmOptions& options_;
+  const storage::JobRecord& job_;
+  service::JobContext& ctx_;
+  std::string name_;
+  UnitSpool spool_;
+  std::string slurm_id_;
+  int submissions_ = 0;
+  int next_event_ = 0;
+};
+
+}  // namespace
+
+SlurmExecutor::SlurmExecutor(SlurmOptions options) : options_(std::move(options)) {
+  if (options_.spool.empty()) throw std::invalid_argument("slurm.spool: a directory every node sees is required");
+  if (run_command({"sinfo", "-h", "-o", "%P"}).exit_code != 0)
+    throw std::runtime_error("executor slurm: sinfo cannot reach a Slurm controller (is Slurm installed and SLURM_CONF set?)");
+  if (!std::filesystem::exists(options_.worker))
+    throw std::runtime_error("slurm.worker: no program at '" + options_.worker + "'");
+  std::filesystem::create_directories(options_.spool);
+  options_.spool = std::filesystem::absolute(options_.spool).string();
+}
+
+void SlurmExecutor::run(const storage::JobRecord& job, const nlohmann::json&, service::JobContext& ctx) const {
+  Unit(options_, job, ctx).run();
+}
+
+}  // namespace cyclopt::server::remote
