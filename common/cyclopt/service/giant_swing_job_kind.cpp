@@ -108,7 +108,8 @@ void run_giant_swing(const nlohmann::json& spec, JobContext& ctx) {
 
 JobKind giant_swing_kind() {
   return {"giant_swing", {"giant_swing"}, giant_swing_job_fields(),
-          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing};
+          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing,
+          {}};  // no estimate: the seed's tasks take about a minute whatever the options
 }
 
 }  // namespace cyclopt::service

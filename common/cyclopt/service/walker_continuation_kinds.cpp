@@ -5,6 +5,7 @@
 #include "cyclopt/continuation/walker_family.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
@@ -109,6 +110,7 @@ nlp::SolverOptions reporting(nlp::SolverOptions o, JobContext& ctx, const std::s
                          .points_total = -1, .message = what});
     return ctx.stop_reason() == StopReason::none;
   };
+  o.should_stop = [&ctx] { return ctx.stop_reason() != StopReason::none; };
   return o;
 }
 
@@ -177,7 +179,11 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
 JobKind continuation_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
   std::vector<std::string> fields = walker_job_fields(true);
   fields.push_back("continuation");
-  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run};
+  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run,
+          [task](const nlohmann::json& spec) {
+            const ContinuationJob j = parse_continuation_job(spec);
+            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()), static_cast<int>(j.seed_speeds.size()));
+          }};
 }
 
 }  // namespace

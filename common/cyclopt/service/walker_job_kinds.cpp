@@ -1,6 +1,7 @@
 #include "cyclopt/service/walker_job_kinds.hpp"
 
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
@@ -34,6 +35,7 @@ nlp::SolverOptions reporting(const WalkerJob& job, JobContext& ctx, double speed
                          .message = "v = " + std::to_string(speed) + " m/s"});
     return ctx.stop_reason() == StopReason::none;
   };
+  o.should_stop = [&ctx] { return ctx.stop_reason() != StopReason::none; };
   return o;
 }
 
@@ -84,6 +86,7 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   mo.base_seed = job.seed;
   mo.solver = job.solver;
   mo.solver.on_iteration = [&ctx](const nlp::IterationReport&) { return ctx.stop_reason() == StopReason::none; };
+  mo.solver.should_stop = [&ctx] { return ctx.stop_reason() != StopReason::none; };
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
                        .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
   const nlp::MultistartResult r = nlp::multistart(
@@ -112,7 +115,8 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
 }
 
 JobKind walker_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
-  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run};
+  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run,
+          [task](const nlohmann::json& spec) { return walker_job_cost(parse_walker_job(spec, false), task, 1, 0); }};
 }
 
 }  // namespace
