@@ -21,9 +21,11 @@ constexpr double kPointFootIterationsPerSweepValue = 300;
 constexpr double kRollingFootIterationsPerSweepValue = 650;
 // ... and of a single continuation curve (correctors warm-started from the QP predictor).
 constexpr double kIterationsPerContinuationValue = 60;
-// Memory of one solve: a base plus bytes per grid point (job_cost_bench).
-constexpr double kBaseBytesPerSolve = 40.0 * (1 << 20);
-constexpr double kBytesPerSolveAndPoint = 60e3;
+// Memory of one solve: a base plus bytes per grid point (job_cost_bench peak RSS: point feet
+// +8.4 / +47.7 MiB, P2 shoes +11.7 / +75.0 MiB at P = 200 / 2000, i.e. 22-35 kB per point; with a
+// margin for the QP's working set at larger P).
+constexpr double kBaseBytesPerSolve = 16.0 * (1 << 20);
+constexpr double kBytesPerSolveAndPoint = 40e3;
 
 int points_field_default() { return walker::WalkingConstants{}.points; }
 
