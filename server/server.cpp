@@ -21,7 +21,7 @@ Server::Server(const ServerConfig& config, const service::JobKindRegistry& kinds
       publisher_(lcm_),
       executor_(make_executor(config_, kinds)),
       pool_(config_, *executor_, store_, publisher_),
-      handler_(kinds, store_, publisher_, pool_) {
+      handler_(config_, kinds, store_, publisher_, pool_) {
   handler_.subscribe(lcm_);
 }
 
