@@ -203,9 +203,10 @@ class Session {
 
   cyclopt::client::ServiceClient& remote() {
     if (!client_) {
-      lcm_.emplace(o_.lcm_url);
-      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + o_.lcm_url + "'");
-      client_.emplace(*lcm_);
+      const std::string url = cyclopt::wire::resolved_lcm_url(o_.lcm_url);
+      lcm_.emplace(url);
+      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
+      client_.emplace(*lcm_, url);
     }
     return *client_;
   }

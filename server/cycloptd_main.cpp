@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   sigaction(SIGINT, &sa, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
 
+  config.lcm_url = wire::resolved_lcm_url(config.lcm_url);
   lcm::LCM lcm(config.lcm_url);
   if (!lcm.good()) {
     std::fprintf(stderr, "cycloptd: cannot open LCM at '%s'\n", config.lcm_url.c_str());
@@ -56,6 +57,9 @@ int main(int argc, char** argv) {
                  "%.3f ms per submission handled)\n",
                  c.accepted.load(), c.duplicates.load(), c.rejected.load(), c.queries.load(),
                  submissions > 0 ? 1e3 * c.submit_seconds / submissions : 0.0);
+    if (const auto* d = srv.bus().datagram_counters())
+      std::fprintf(stderr, "cycloptd: datagrams %ld: %ld messages, %ld malformed, %ld oversize, %ld incomplete dropped\n",
+                   d->datagrams, d->messages, d->malformed, d->oversize, d->dropped_assemblies);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cycloptd: %s\n", e.what());
     return 2;

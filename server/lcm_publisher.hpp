@@ -1,18 +1,17 @@
 #pragma once
-// Thread-safe publishing on the server's LCM instance (workers publish progress while the main
+// Thread-safe publishing on the server's message bus (workers publish progress while the main
 // thread handles requests), with the cost of publishing accounted to the caller.
 
-#include <lcm/lcm-cpp.hpp>
+#include "message_bus.hpp"
 
 #include <ctime>
-#include <mutex>
 #include <string>
 
 namespace cyclopt::server {
 
 class LcmPublisher {
  public:
-  explicit LcmPublisher(lcm::LCM& lcm) : lcm_(lcm) {}
+  explicit LcmPublisher(wire::MessageBus& bus) : bus_(bus) {}
 
   // Returns the CPU seconds the calling thread spent encoding and sending. (CPU, not wall time:
   // on a loaded machine a multicast send wakes every receiver and the sender is often preempted
@@ -20,10 +19,7 @@ class LcmPublisher {
   template <class Message>
   double publish(const std::string& channel, const Message& msg) {
     const double t0 = thread_cpu_seconds();
-    {
-      std::lock_guard lock(mutex_);
-      lcm_.publish(channel, &msg);
-    }
+    bus_.publish(channel, msg);
     return thread_cpu_seconds() - t0;
   }
 
@@ -34,8 +30,7 @@ class LcmPublisher {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
   }
 
-  lcm::LCM& lcm_;
-  std::mutex mutex_;
+  wire::MessageBus& bus_;
 };
 
 }  // namespace cyclopt::server

@@ -1,17 +1,19 @@
 #pragma once
 // Answers every message on CYCLOPT_SUBMIT, CYCLOPT_CANCEL and CYCLOPT_QUERY. Nothing a client
-// sends can crash the server: undecodable bytes, malformed JSON, wrong types, out-of-range or
-// oversize values are each answered by a job_ack_t rejection whose field and problem name
-// what was wrong (query errors arrive as a query_reply_t with error set).
+// sends can crash the server: every payload is checked against its type's wire layout before it
+// is decoded (wire::decode_checked), and undecodable bytes, malformed JSON, wrong types,
+// out-of-range or oversize values are each answered by a job_ack_t rejection whose field and
+// problem name what was wrong (query errors arrive as a query_reply_t with error set). A result
+// row too large for one reply is sent in parts (query_reply_t.row_bytes).
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
+#include "message_bus.hpp"
 #include "worker_pool.hpp"
 
-#include <lcm/lcm-cpp.hpp>
-
 #include <atomic>
+#include <span>
 
 namespace cyclopt::server {
 
@@ -28,15 +30,16 @@ class RequestHandler {
  public:
   RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store, LcmPublisher& publisher,
                  WorkerPool& pool);
-  void subscribe(lcm::LCM& lcm);
+  void subscribe(wire::MessageBus& bus);
   const RequestCounters& counters() const { return counters_; }
 
-  void on_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  void on_cancel(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  void on_query(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  // The handlers of the three channels (public for the fuzz test, which calls them directly).
+  void on_submit(std::span<const std::uint8_t> payload);
+  void on_cancel(std::span<const std::uint8_t> payload);
+  void on_query(std::span<const std::uint8_t> payload);
 
  private:
-  void handle_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void handle_submit(std::span<const std::uint8_t> payload);
   void accept(const std::string& request_id, std::int64_t job_id, bool duplicate, const std::string& state);
   void reject(const std::string& request_id, const std::string& field, const std::string& problem);
 
@@ -45,6 +48,13 @@ class RequestHandler {
   LcmPublisher& publisher_;
   WorkerPool& pool_;
   RequestCounters counters_;
+  // The last row sent in parts, serialised, so that each part does not serialise it again.
+  struct PartedRow {
+    std::string what, state;
+    std::int64_t job_id = -1;
+    int offset = -1;
+    std::string text;
+  } parted_;
 };
 
 }  // namespace cyclopt::server

@@ -1,11 +1,14 @@
 #pragma once
 // The whole server on a caller-supplied LCM instance: opens the store (re-queueing interrupted
 // jobs), starts the workers and answers requests. serve() pumps LCM until `stop` is set; tests
-// on memq:// may instead pump the shared LCM instance themselves.
+// on memq:// may instead pump the shared LCM instance themselves. config.lcm_url must be the URL
+// `lcm` was opened with (on udpm:// the server receives through its own checked receiver,
+// wire::MessageBus).
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
+#include "message_bus.hpp"
 #include "request_handler.hpp"
 #include "server_config.hpp"
 #include "worker_pool.hpp"
@@ -25,10 +28,12 @@ class Server {
   const storage::RecoverySummary& recovery() const { return recovery_; }
   const RequestCounters& counters() const { return handler_.counters(); }
   storage::ResultStore& store() { return store_; }
+  const wire::MessageBus& bus() const { return bus_; }
+  RequestHandler& handler() { return handler_; }
 
  private:
   ServerConfig config_;
-  lcm::LCM& lcm_;
+  wire::MessageBus bus_;
   storage::ResultStore store_;
   storage::RecoverySummary recovery_;
   LcmPublisher publisher_;
