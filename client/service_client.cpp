@@ -29,7 +29,8 @@ std::string new_request_id() {
   return id;
 }
 
-ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url) : bus_(lcm, url) {
+ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url, std::optional<wire::AuthKey> key) : bus_(lcm, url) {
+  if (key) key_ = wire::KeyRing{{*key}};
   bus_.subscribe(channels::kAck, [this](std::span<const std::uint8_t> p) { on_ack(p); });
   bus_.subscribe(channels::kProgress, [this](std::span<const std::uint8_t> p) { on_progress(p); });
   bus_.subscribe(channels::kDone, [this](std::span<const std::uint8_t> p) { on_done(p); });
@@ -37,27 +38,35 @@ ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url) : bus_(lcm, 
 }
 
 template <class T>
-std::optional<T> ServiceClient::checked(std::span<const std::uint8_t> payload) {
+std::optional<T> ServiceClient::checked(const char* channel, std::span<const std::uint8_t> raw) {
+  const std::optional<wire::Signature> sig = wire::split_signature(raw);
   std::string problem;
-  auto m = wire::decode_checked<T>(payload, problem);
-  if (!m) ++malformed_;
+  auto m = wire::decode_checked<T>(raw, problem);
+  if (!m) {
+    ++malformed_;
+    return m;
+  }
+  if (key_ && !wire::verify_signature(*key_, sig, channel, raw, m->request_id, wire::unix_now_us(), problem)) {
+    ++unverified_;
+    return std::nullopt;
+  }
   return m;
 }
 
 void ServiceClient::on_ack(std::span<const std::uint8_t> payload) {
-  const auto m = checked<cyclopt_lcm::job_ack_t>(payload);
+  const auto m = checked<cyclopt_lcm::job_ack_t>(channels::kAck, payload);
   if (m && awaiting_.count(m->request_id)) acks_[m->request_id] = *m;
 }
 void ServiceClient::on_progress(std::span<const std::uint8_t> payload) {
-  const auto m = checked<cyclopt_lcm::job_progress_t>(payload);
+  const auto m = checked<cyclopt_lcm::job_progress_t>(channels::kProgress, payload);
   if (m && progress_callback_ && m->job_id == watched_job_) (*progress_callback_)(*m);
 }
 void ServiceClient::on_done(std::span<const std::uint8_t> payload) {
-  const auto m = checked<cyclopt_lcm::job_done_t>(payload);
+  const auto m = checked<cyclopt_lcm::job_done_t>(channels::kDone, payload);
   if (m && m->job_id == watched_job_) done_[m->job_id] = *m;
 }
 void ServiceClient::on_query_reply(std::span<const std::uint8_t> payload) {
-  const auto m = checked<cyclopt_lcm::query_reply_t>(payload);
+  const auto m = checked<cyclopt_lcm::query_reply_t>(channels::kQueryReply, payload);
   if (m && awaiting_.count(m->request_id)) replies_[m->request_id] = *m;
 }
 
@@ -90,7 +99,7 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::submit(const std::string& r
   std::optional<cyclopt_lcm::job_ack_t> ack;
   // Each round publishes once and then waits a full retry interval (or what is left).
   for (auto left = deadline - Clock::now(); !ack && left > std::chrono::milliseconds(1); left = deadline - Clock::now()) {
-    bus_.publish(channels::kSubmit, msg);
+    bus_.publish(channels::kSubmit, msg, key_ ? &key_->keys[0] : nullptr);
     ack = await(acks_, request_id, std::min(retry_seconds, std::chrono::duration<double>(left).count()));
   }
   awaiting_.erase(request_id);
@@ -102,7 +111,7 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::cancel(std::int64_t job_id,
   msg.request_id = new_request_id();
   msg.job_id = job_id;
   awaiting_.insert(msg.request_id);
-  bus_.publish(channels::kCancel, msg);
+  bus_.publish(channels::kCancel, msg, key_ ? &key_->keys[0] : nullptr);
   auto ack = await(acks_, msg.request_id, timeout_seconds);
   awaiting_.erase(msg.request_id);
   return ack;
@@ -123,7 +132,7 @@ std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest req
     msg.limit = std::min(remaining, channels::kMaxQueryLimit);
     msg.part_offset = static_cast<int>(row_text.size());
     awaiting_.insert(msg.request_id);
-    bus_.publish(channels::kQuery, msg);
+    bus_.publish(channels::kQuery, msg, key_ ? &key_->keys[0] : nullptr);
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     const auto answer = await(replies_, msg.request_id, left);
     awaiting_.erase(msg.request_id);

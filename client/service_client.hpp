@@ -37,7 +37,9 @@ class ServiceClient {
  public:
   // `url`: the one `lcm` was opened with (wire::resolved_lcm_url); udpm:// receives through the
   // checked receiver of wire::MessageBus.
-  explicit ServiceClient(lcm::LCM& lcm, const std::string& url = "");
+  // key: with it every request is signed and only answers, progress and done messages signed
+  // with it are believed (message_auth.hpp); without it signatures are ignored.
+  explicit ServiceClient(lcm::LCM& lcm, const std::string& url = "", std::optional<wire::AuthKey> key = std::nullopt);
 
   // Publishes the submission every retry_seconds until an answer for request_id arrives or
   // timeout_seconds pass (nullopt). The answer may be a rejection (accepted = false).
@@ -59,6 +61,8 @@ class ServiceClient {
                                                  const std::string& reply_id, double timeout_seconds);
   // Received payloads that were not a well-formed encoding of their channel's type.
   long malformed_received() const { return malformed_; }
+  // Well-formed messages dropped because they were not signed with this client's key.
+  long unverified_received() const { return unverified_; }
 
   // The handlers of the four channels the client reads (public for the fuzz test).
   void on_ack(std::span<const std::uint8_t> payload);
@@ -68,15 +72,18 @@ class ServiceClient {
 
  private:
   bool pump_until(const std::function<bool()>& done, double seconds);
+  // The message in `raw` if it is well-formed (and, with a key, signed with it).
   template <class T>
-  std::optional<T> checked(std::span<const std::uint8_t> payload);
+  std::optional<T> checked(const char* channel, std::span<const std::uint8_t> raw);
 
   // Waits for the answer to `id` (answers to other clients' requests are ignored).
   template <class Reply>
   std::optional<Reply> await(std::map<std::string, Reply>& answers, const std::string& id, double seconds);
 
   wire::MessageBus bus_;
+  std::optional<wire::KeyRing> key_;
   long malformed_ = 0;
+  long unverified_ = 0;
   std::set<std::string> awaiting_;  // request ids whose answers are kept
   std::map<std::string, cyclopt_lcm::job_ack_t> acks_;
   std::map<std::int64_t, cyclopt_lcm::job_done_t> done_;

@@ -6,6 +6,7 @@
 // checked by wire::decode_checked() before anything trusts it. Handlers run inside
 // handle_timeout(), on the calling thread; publish() may be called from any thread.
 
+#include "message_auth.hpp"
 #include "udpm_receiver.hpp"
 #include "wire_check.hpp"
 
@@ -41,9 +42,11 @@ class MessageBus {
   int handle_timeout(int timeout_ms);
 
   void publish(const std::string& channel, std::span<const std::uint8_t> bytes);
+  // Publishes msg, signed with `key` (message_auth.hpp) unless it is null.
   template <class T>
-  void publish(const std::string& channel, const T& msg) {
-    const std::string bytes = encode(msg);
+  void publish(const std::string& channel, const T& msg, const AuthKey* key = nullptr) {
+    std::string bytes = encode(msg);
+    if (key) bytes += signature_trailer(*key, channel, as_bytes(bytes), msg.request_id, unix_now_us());
     publish(channel, as_bytes(bytes));
   }
 

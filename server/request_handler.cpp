@@ -40,8 +40,28 @@ std::string request_id_problem(const std::string& id) {
 }  // namespace
 
 RequestHandler::RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store,
-                               LcmPublisher& publisher, WorkerPool& pool)
-    : kinds_(kinds), store_(store), publisher_(publisher), pool_(pool) {}
+                               LcmPublisher& publisher, WorkerPool& pool, const wire::KeyRing* keys, JobOwners* owners)
+    : kinds_(kinds), store_(store), publisher_(publisher), pool_(pool), keys_(keys), owners_(owners) {}
+
+template <class T>
+std::optional<T> RequestHandler::receive(std::span<const std::uint8_t> raw, const char* channel,
+                                         const wire::AuthKey*& key) {
+  key = nullptr;
+  const std::optional<wire::Signature> sig = wire::split_signature(raw);
+  std::string problem;
+  auto msg = wire::decode_checked<T>(raw, problem);
+  if (!msg) {
+    reject("", channel, undecodable(channel, problem));
+    return std::nullopt;
+  }
+  if (!keys_) return msg;
+  key = wire::verify_signature(*keys_, sig, channel, raw, msg->request_id, wire::unix_now_us(), problem);
+  if (key) return msg;
+  ++counters_.unauthenticated;
+  reject(msg->request_id, "signature", std::string("signature: ") + problem + " (this server accepts only messages "
+                                           "signed with a key of its key file)");
+  return std::nullopt;
+}
 
 void RequestHandler::subscribe(wire::MessageBus& bus) {
   bus.subscribe(channels::kSubmit, [this](std::span<const std::uint8_t> p) { on_submit(p); });
@@ -49,7 +69,8 @@ void RequestHandler::subscribe(wire::MessageBus& bus) {
   bus.subscribe(channels::kQuery, [this](std::span<const std::uint8_t> p) { on_query(p); });
 }
 
-void RequestHandler::reject(const std::string& request_id, const std::string& field, const std::string& problem) {
+void RequestHandler::reject(const std::string& request_id, const std::string& field, const std::string& problem,
+                            const wire::AuthKey* key) {
   ++counters_.rejected;
   cyclopt_lcm::job_ack_t ack;
   ack.request_id = request_id.substr(0, kMaxEchoedRequestIdBytes);
@@ -58,18 +79,18 @@ void RequestHandler::reject(const std::string& request_id, const std::string& fi
   ack.duplicate = false;
   ack.field = field;
   ack.problem = problem.substr(0, 2000);
-  publisher_.publish(channels::kAck, ack);
+  publisher_.publish_signed(channels::kAck, ack, key);
 }
 
 void RequestHandler::accept(const std::string& request_id, std::int64_t job_id, bool duplicate,
-                            const std::string& state) {
+                            const std::string& state, const wire::AuthKey* key) {
   cyclopt_lcm::job_ack_t ack;
   ack.request_id = request_id;
   ack.accepted = true;
   ack.job_id = job_id;
   ack.duplicate = duplicate;
   ack.state = state;
-  publisher_.publish(channels::kAck, ack);
+  publisher_.publish_signed(channels::kAck, ack, key);
 }
 
 void RequestHandler::on_submit(std::span<const std::uint8_t> payload) {
@@ -80,58 +101,68 @@ void RequestHandler::on_submit(std::span<const std::uint8_t> payload) {
 }
 
 void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
-  std::string problem;
-  const auto decoded = wire::decode_checked<cyclopt_lcm::job_submit_t>(payload, problem);
-  if (!decoded) return reject("", channels::kSubmit, undecodable(channels::kSubmit, problem));
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::job_submit_t>(payload, channels::kSubmit, key);
+  if (!decoded) return;
   const cyclopt_lcm::job_submit_t& msg = *decoded;
   try {
     if (const std::string p = request_id_problem(msg.request_id); !p.empty())
-      return reject(msg.request_id, "request_id", "request_id: " + p);
+      return reject(msg.request_id, "request_id", "request_id: " + p, key);
     if (msg.spec_json.size() > channels::kMaxSpecBytes)
       return reject(msg.request_id, "spec_json",
                     "spec_json: oversize, " + std::to_string(msg.spec_json.size()) + " bytes, at most " +
-                        std::to_string(channels::kMaxSpecBytes) + " allowed");
+                        std::to_string(channels::kMaxSpecBytes) + " allowed",
+                    key);
     const service::ValidatedJobSpec v = service::validate_job_spec(service::parse_job_spec_text(msg.spec_json), kinds_);
     const storage::SubmitOutcome out = store_.submit(msg.request_id, v.scene, v.task, msg.spec_json);
     if (out.spec_differs)
       return reject(msg.request_id, "request_id",
-                    "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec");
+                    "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec", key);
+    if (!out.duplicate && key) owners_->record(out.job_id, *key);
     ++(out.duplicate ? counters_.duplicates : counters_.accepted);
-    accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)));
+    accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)), key);
     if (!out.duplicate) pool_.wake();
   } catch (const service::SpecError& e) {
-    reject(msg.request_id, e.field(), e.what());
+    reject(msg.request_id, e.field(), e.what(), key);
   } catch (const std::exception& e) {
-    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);
   } catch (...) {
-    reject(msg.request_id, "server", "server: internal error");
+    reject(msg.request_id, "server", "server: internal error", key);
   }
 }
 
 void RequestHandler::on_cancel(std::span<const std::uint8_t> payload) {
-  std::string problem;
-  const auto decoded = wire::decode_checked<cyclopt_lcm::job_cancel_t>(payload, problem);
-  if (!decoded) return reject("", channels::kCancel, undecodable(channels::kCancel, problem));
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::job_cancel_t>(payload, channels::kCancel, key);
+  if (!decoded) return;
   const cyclopt_lcm::job_cancel_t& msg = *decoded;
   try {
+    if (key && !key->admin) {
+      const wire::AuthKey* owner = owners_->owner(msg.job_id);
+      if (owner != key && store_.job(msg.job_id))
+        return reject(msg.request_id, "job_id",
+                      "job_id: job " + std::to_string(msg.job_id) + " was not submitted with key '" + key->id +
+                          "'; only its submitter's key or an admin key may cancel it",
+                      key);
+    }
     const storage::CancelOutcome out = store_.cancel(msg.job_id);
     if (out == storage::CancelOutcome::not_found)
-      return reject(msg.request_id, "job_id", "job_id: no job " + std::to_string(msg.job_id));
+      return reject(msg.request_id, "job_id", "job_id: no job " + std::to_string(msg.job_id), key);
     if (out == storage::CancelOutcome::already_final)
-      return reject(msg.request_id, "job_id", "job_id: job " + std::to_string(msg.job_id) + " has already finished");
+      return reject(msg.request_id, "job_id", "job_id: job " + std::to_string(msg.job_id) + " has already finished", key);
     pool_.cancel(msg.job_id);
-    accept(msg.request_id, msg.job_id, false, out == storage::CancelOutcome::cancelled ? "cancelled" : "running");
+    accept(msg.request_id, msg.job_id, false, out == storage::CancelOutcome::cancelled ? "cancelled" : "running", key);
   } catch (const std::exception& e) {
-    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);
   } catch (...) {
-    reject(msg.request_id, "server", "server: internal error");
+    reject(msg.request_id, "server", "server: internal error", key);
   }
 }
 
 void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
-  std::string problem;
-  const auto decoded = wire::decode_checked<cyclopt_lcm::query_request_t>(payload, problem);
-  if (!decoded) return reject("", channels::kQuery, undecodable(channels::kQuery, problem));
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::query_request_t>(payload, channels::kQuery, key);
+  if (!decoded) return;
   const cyclopt_lcm::query_request_t& msg = *decoded;
   ++counters_.queries;
   cyclopt_lcm::query_reply_t reply;
@@ -195,7 +226,7 @@ void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
   } catch (...) {
     reply.error = "server: internal error";
   }
-  publisher_.publish(channels::kQueryReply, reply);
+  publisher_.publish_signed(channels::kQueryReply, reply, key);
 }
 
 }  // namespace cyclopt::server

@@ -4,15 +4,20 @@
 // is decoded (wire::decode_checked), and undecodable bytes, malformed JSON, wrong types,
 // out-of-range or oversize values are each answered by a job_ack_t rejection whose field and
 // problem name what was wrong (query errors arrive as a query_reply_t with error set). A result
-// row too large for one reply is sent in parts (query_reply_t.row_bytes).
+// row too large for one reply is sent in parts (query_reply_t.row_bytes). With a key ring
+// (message_auth.hpp) every request must be signed by a known key within the clock skew, else it
+// is rejected (field "signature") and counted; answers are signed with the requester's key, and
+// a job may be cancelled only by its submitter's key or an admin key.
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
+#include "job_owners.hpp"
 #include "lcm_publisher.hpp"
 #include "message_bus.hpp"
 #include "worker_pool.hpp"
 
 #include <atomic>
+#include <optional>
 #include <span>
 
 namespace cyclopt::server {
@@ -23,13 +28,15 @@ struct RequestCounters {
   std::atomic<long> duplicates{0};
   std::atomic<long> rejected{0};
   std::atomic<long> queries{0};
+  std::atomic<long> unauthenticated{0};  // unsigned, unknown-key, forged or stale requests
   std::atomic<double> submit_seconds{0.0};  // wall time spent handling submissions (decode .. ack)
 };
 
 class RequestHandler {
  public:
+  // keys, owners: nullptr when messages are not authenticated.
   RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store, LcmPublisher& publisher,
-                 WorkerPool& pool);
+                 WorkerPool& pool, const wire::KeyRing* keys, JobOwners* owners);
   void subscribe(wire::MessageBus& bus);
   const RequestCounters& counters() const { return counters_; }
 
@@ -40,13 +47,21 @@ class RequestHandler {
 
  private:
   void handle_submit(std::span<const std::uint8_t> payload);
-  void accept(const std::string& request_id, std::int64_t job_id, bool duplicate, const std::string& state);
-  void reject(const std::string& request_id, const std::string& field, const std::string& problem);
+  // Decodes a request of type T (signature trailer split off and checked); nullopt after a
+  // rejection. `key` is the signing key (nullptr when authentication is off).
+  template <class T>
+  std::optional<T> receive(std::span<const std::uint8_t> raw, const char* channel, const wire::AuthKey*& key);
+  void accept(const std::string& request_id, std::int64_t job_id, bool duplicate, const std::string& state,
+              const wire::AuthKey* key);
+  void reject(const std::string& request_id, const std::string& field, const std::string& problem,
+              const wire::AuthKey* key = nullptr);
 
   const service::JobKindRegistry& kinds_;
   storage::ResultStore& store_;
   LcmPublisher& publisher_;
   WorkerPool& pool_;
+  const wire::KeyRing* keys_;
+  JobOwners* owners_;
   RequestCounters counters_;
   // The last row sent in parts, serialised, so that each part does not serialise it again.
   struct PartedRow {

@@ -5,11 +5,14 @@ namespace cyclopt::server {
 Server::Server(const ServerConfig& config, const service::JobKindRegistry& kinds, lcm::LCM& lcm)
     : config_(config),
       bus_(lcm, config_.lcm_url),
+      keys_(config_.auth_secret_file.empty() ? std::nullopt
+                                             : std::optional(wire::read_key_file(config_.auth_secret_file))),
       store_(config_.database),
       recovery_(store_.recover_interrupted()),
-      publisher_(bus_),
+      owners_(keys_ ? std::optional<JobOwners>(std::in_place, *keys_, store_) : std::nullopt),
+      publisher_(bus_, owners_ ? &*owners_ : nullptr),
       pool_(config_, kinds, store_, publisher_),
-      handler_(kinds, store_, publisher_, pool_) {
+      handler_(kinds, store_, publisher_, pool_, keys_ ? &*keys_ : nullptr, owners_ ? &*owners_ : nullptr) {
   handler_.subscribe(bus_);
 }
 

@@ -16,6 +16,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
+#include <optional>
 
 namespace cyclopt::server {
 
@@ -29,13 +30,16 @@ class Server {
   const RequestCounters& counters() const { return handler_.counters(); }
   storage::ResultStore& store() { return store_; }
   const wire::MessageBus& bus() const { return bus_; }
+  bool authenticates() const { return keys_.has_value(); }
   RequestHandler& handler() { return handler_; }
 
  private:
   ServerConfig config_;
   wire::MessageBus bus_;
+  std::optional<wire::KeyRing> keys_;  // config.auth_secret_file, if set
   storage::ResultStore store_;
   storage::RecoverySummary recovery_;
+  std::optional<JobOwners> owners_;
   LcmPublisher publisher_;
   WorkerPool pool_;
   RequestHandler handler_;

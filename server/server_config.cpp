@@ -21,7 +21,8 @@ void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
   else if (key == "max_job_seconds") c.caps.max_wall_seconds = number_value(v, key, 1e-3, 7 * 86400.0);
   else if (key == "max_job_iterations") c.caps.max_iterations = integer_value(v, key, 1, 1000000000);
   else if (key == "progress_hz") c.progress_hz = number_value(v, key, 0.1, 100.0);
-  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, progress_hz)");
+  else if (key == "auth_secret_file") c.auth_secret_file = string_value(v, key, 4096);
+  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, progress_hz, auth_secret_file)");
 }
 
 }  // namespace
@@ -48,6 +49,7 @@ ServerConfig server_config_from_args(const std::vector<std::string>& args) {
     std::string key = a.substr(2);
     for (char& ch : key)
       if (ch == '-') ch = '_';
+    if (key == "auth_secret_file") throw std::invalid_argument(a + ": set auth_secret_file in the --config file");
     const bool text = key == "database" || key == "lcm_url";
     nlohmann::json v = text ? nlohmann::json(value) : nlohmann::json::parse(value, nullptr, false);
     if (v.is_discarded()) v = value;  // reported as a type error by apply()

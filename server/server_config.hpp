@@ -2,7 +2,9 @@
 // cycloptd's settings: defaults, then a JSON config file (--config), then command-line flags.
 //
 //   {"database": "cyclopt.db", "lcm_url": "udpm://239.255.76.67:7667?ttl=0", "workers": 2,
-//    "max_job_seconds": 3600, "max_job_iterations": 100000, "progress_hz": 5}
+//    "max_job_seconds": 3600, "max_job_iterations": 100000, "progress_hz": 5,
+//    "auth_secret_file": "/etc/cyclopt/keys"}
+// auth_secret_file (message_auth.hpp) is accepted in the config file only.
 
 #include "cyclopt/service/job_context.hpp"
 
@@ -17,6 +19,7 @@ struct ServerConfig {
   int workers = 0;      // 0: one per core
   service::JobLimits caps;  // per-job time and iteration limits (specs may only lower them)
   double progress_hz = 5.0;  // progress messages per second and job, at most
+  std::string auth_secret_file;  // empty: messages are not authenticated (a warning at start)
 };
 
 // Throws std::invalid_argument naming the key and the admissible range.
@@ -34,7 +37,8 @@ every solved point in SQLite (WAL) and publishes progress. SIGTERM / SIGINT stop
 running jobs are checkpointed (their stored points kept) and resume at the next start.
 
   --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
-                         max_job_iterations, progress_hz (flags given after it override it)
+                         max_job_iterations, progress_hz, auth_secret_file (flags given after
+                         it override it; the key file path is read from the config file only)
   --database FILE        results database (default cyclopt.db; created if missing)
   --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)

@@ -185,7 +185,7 @@ TEST_F(WireFuzz, NoInputStopsTheServerOrTheClient) {
 
   // Still alive and answering: a submission is acknowledged, queried and cancelled.
   const std::string spec = R"({"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", )"
-                           R"("sweep": {"parameter": "density", "values": "1:1:2"}})";
+                           R"("point_delay_ms": 100, "sweep": {"parameter": "density", "values": "1:1:100"}})";
   const auto ack = client_.submit("after-the-fuzz", spec, 10.0);
   ASSERT_TRUE(ack);
   EXPECT_TRUE(ack->accepted) << ack->problem;

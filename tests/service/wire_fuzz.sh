@@ -40,6 +40,9 @@ SERVER=$!
 PIDS+=("$SERVER")
 for _ in $(seq 100); do "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 && break; sleep 0.1; done
 "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 || fail "server did not come up"
+# Without a key file the server warns, once, that anyone on the network can steer it.
+[ "$(grep -c "WARNING: no auth_secret_file" "$WORK/server.log")" -eq 1 ] || fail "no single warning about missing authentication"
+echo "without a key file: $(grep -o "WARNING: no auth_secret_file.*can submit, cancel" "$WORK/server.log")"
 lcm-logger -q -f --lcm-url="$LCM_DEFAULT_URL" "$WORK/canary.lcmlog" >"$WORK/logger.log" 2>&1 &
 LOGGER=$!
 
