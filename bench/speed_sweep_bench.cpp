@@ -6,7 +6,7 @@
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600]: the sweep is stopped at the
 // first point after the budget (then the per-speed table shows what was reached).
-#include "cyclopt/continuation/speed_sweep.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "machine_info.hpp"
 
@@ -18,6 +18,7 @@
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
