@@ -39,9 +39,10 @@ std::string request_id_problem(const std::string& id) {
 
 }  // namespace
 
-RequestHandler::RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store,
-                               LcmPublisher& publisher, WorkerPool& pool, const wire::KeyRing* keys, JobOwners* owners)
-    : kinds_(kinds), store_(store), publisher_(publisher), pool_(pool), keys_(keys), owners_(owners) {}
+RequestHandler::RequestHandler(const ServerConfig& config, const service::JobKindRegistry& kinds,
+                               storage::ResultStore& store, LcmPublisher& publisher, WorkerPool& pool,
+                               const wire::KeyRing* keys, JobOwners* owners)
+    : config_(config), kinds_(kinds), store_(store), publisher_(publisher), pool_(pool), keys_(keys), owners_(owners) {}
 
 template <class T>
 std::optional<T> RequestHandler::receive(std::span<const std::uint8_t> raw, const char* channel,
@@ -114,7 +115,20 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
                         std::to_string(channels::kMaxSpecBytes) + " allowed",
                     key);
     const service::ValidatedJobSpec v = service::validate_job_spec(service::parse_job_spec_text(msg.spec_json), kinds_);
-    const storage::SubmitOutcome out = store_.submit(msg.request_id, v.scene, v.task, msg.spec_json);
+    const service::JobCost cost = v.kind->estimate ? v.kind->estimate(v.spec) : service::JobCost{};
+    service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
+    const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
+    const storage::SubmitOutcome out =
+        store_.submit({msg.request_id, v.scene, v.task, msg.spec_json, sender, cost.seconds}, config_.quota);
+    if (out.over_quota)
+      return reject(msg.request_id, "queue",
+                    "queue: sender '" + sender + "' has " + std::to_string(out.queued_jobs) + " queued jobs estimated at " +
+                        service::duration_text(out.queued_seconds) + "; with this one (" +
+                        service::duration_text(cost.seconds) + ") that exceeds the quota of " +
+                        std::to_string(config_.quota.max_queued_jobs) + " jobs or " +
+                        service::duration_text(config_.quota.max_queued_seconds) +
+                        " per sender (cycloptd --max-queued-jobs, --max-queued-hours); resubmit when some have run",
+                    key);
     if (out.spec_differs)
       return reject(msg.request_id, "request_id",
                     "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec", key);

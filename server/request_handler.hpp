@@ -7,13 +7,16 @@
 // row too large for one reply is sent in parts (query_reply_t.row_bytes). With a key ring
 // (message_auth.hpp) every request must be signed by a known key within the clock skew, else it
 // is rejected (field "signature") and counted; answers are signed with the requester's key, and
-// a job may be cancelled only by its submitter's key or an admin key.
+// a job may be cancelled only by its submitter's key or an admin key. A valid job whose
+// estimated cost exceeds the server's limits, or whose sender's queue quota is used up, is
+// rejected too (field: the spec field driving the cost, or "queue").
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "job_owners.hpp"
 #include "lcm_publisher.hpp"
 #include "message_bus.hpp"
+#include "server_config.hpp"
 #include "worker_pool.hpp"
 
 #include <atomic>
@@ -35,8 +38,8 @@ struct RequestCounters {
 class RequestHandler {
  public:
   // keys, owners: nullptr when messages are not authenticated.
-  RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store, LcmPublisher& publisher,
-                 WorkerPool& pool, const wire::KeyRing* keys, JobOwners* owners);
+  RequestHandler(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+                 LcmPublisher& publisher, WorkerPool& pool, const wire::KeyRing* keys, JobOwners* owners);
   void subscribe(wire::MessageBus& bus);
   const RequestCounters& counters() const { return counters_; }
 
@@ -56,6 +59,7 @@ class RequestHandler {
   void reject(const std::string& request_id, const std::string& field, const std::string& problem,
               const wire::AuthKey* key = nullptr);
 
+  const ServerConfig& config_;
   const service::JobKindRegistry& kinds_;
   storage::ResultStore& store_;
   LcmPublisher& publisher_;

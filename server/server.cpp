@@ -12,7 +12,7 @@ Server::Server(const ServerConfig& config, const service::JobKindRegistry& kinds
       owners_(keys_ ? std::optional<JobOwners>(std::in_place, *keys_, store_) : std::nullopt),
       publisher_(bus_, owners_ ? &*owners_ : nullptr),
       pool_(config_, kinds, store_, publisher_),
-      handler_(kinds, store_, publisher_, pool_, keys_ ? &*keys_ : nullptr, owners_ ? &*owners_ : nullptr) {
+      handler_(config_, kinds, store_, publisher_, pool_, keys_ ? &*keys_ : nullptr, owners_ ? &*owners_ : nullptr) {
   handler_.subscribe(bus_);
 }
 

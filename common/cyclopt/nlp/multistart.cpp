@@ -38,7 +38,9 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
   MultistartResult result;
   result.starts.resize(static_cast<size_t>(n));
   result.runs.resize(static_cast<size_t>(n));
+  const auto stopped = [&] { return options.solver.should_stop && options.solver.should_stop(); };
   for (int i = 0; i < n; ++i) {
+    if (stopped()) break;  // the unsampled starts stay empty and unsolved (user_stop)
     std::mt19937_64 rng(options.base_seed + static_cast<std::uint64_t>(i));
     result.starts[static_cast<size_t>(i)] = sample_start(rng);
   }
@@ -51,8 +53,15 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
   auto worker = [&] {
     try {
       const std::unique_ptr<Problem> problem = make_problem();
-      for (int i = next++; i < n; i = next++)
-        result.runs[static_cast<size_t>(i)] = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+      for (int i = next++; i < n; i = next++) {
+        SolverSummary& run = result.runs[static_cast<size_t>(i)];
+        if (stopped()) {  // a start not begun: nothing to solve
+          run.termination = Termination::user_stop;
+          run.message = "not started: stopped by should_stop";
+          continue;
+        }
+        run = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+      }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(failure_mutex);
       if (!failure) failure = std::current_exception();

@@ -42,6 +42,7 @@ storage::SolutionPoint bezier_point(const Model& model, const GiantSwingJob& job
   MinimumJerkSettings settings = job.bezier;
   settings.solver.on_iteration =
       solver_progress(ctx, {.curve_id = 0, .points_total = 1, .message = "bezier minimum jerk, " + job.motion});
+  settings.solver.should_stop = stop_predicate(ctx);
   // periodic: the closed swing from and to omega, repeated (its start rate is omega).
   const MinimumJerkResult r = solve_minimum_jerk(model, job.task, settings);
   if (r.coefficients.size() == 0) throw std::runtime_error("giant swing (bezier): " + r.message);
@@ -101,7 +102,8 @@ void run_giant_swing(const nlohmann::json& spec, JobContext& ctx) {
 
 JobKind giant_swing_kind() {
   return {"giant_swing", {"giant_swing"}, giant_swing_job_fields(),
-          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing};
+          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing,
+          {}};  // no estimate: the seed's tasks take about a minute whatever the options
 }
 
 }  // namespace cyclopt::service

@@ -20,4 +20,8 @@ IterationCallback stop_requests(JobContext& ctx) {
   return [&ctx](const nlp::IterationReport&) { return ctx.stop_reason() == StopReason::none; };
 }
 
+std::function<bool()> stop_predicate(JobContext& ctx) {
+  return [&ctx] { return ctx.stop_reason() != StopReason::none; };
+}
+
 }  // namespace cyclopt::service

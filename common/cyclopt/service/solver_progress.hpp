@@ -22,4 +22,8 @@ IterationCallback solver_progress(JobContext& ctx, ProgressReport where);
 // reporting may not be called: only honours stop requests.
 IterationCallback stop_requests(JobContext& ctx);
 
+// For SolverOptions::should_stop of every solve of the job (polled before each evaluation, from
+// any thread): cancel and the time limit then take effect within one evaluation.
+std::function<bool()> stop_predicate(JobContext& ctx);
+
 }  // namespace cyclopt::service

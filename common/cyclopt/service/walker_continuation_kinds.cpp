@@ -4,6 +4,7 @@
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
@@ -109,6 +110,7 @@ void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
   po.speed = job.walker.speeds.front();
   ctx.announce(static_cast<int>(job.values.size()));
   job.options.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "continuation over " + job.parameter});
+  job.options.corrector.should_stop = stop_predicate(ctx);
   const continuation::ParametricProblem family = studies::walker_family(model, po, job.parameter);
   walker::GaitProblemOptions first = po;
   if (job.parameter == "speed") first.speed = job.values.front();
@@ -140,6 +142,7 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
   so.scale = job.walker.scale;
   so.continuation = job.options;
   so.continuation.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "speed sweep"});
+  so.continuation.corrector.should_stop = stop_predicate(ctx);
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
   CurveStore store(ctx, family, 1);
@@ -167,7 +170,11 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
 JobKind continuation_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
   std::vector<std::string> fields = walker_job_fields(true);
   fields.push_back("continuation");
-  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run};
+  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run,
+          [task](const nlohmann::json& spec) {
+            const ContinuationJob j = parse_continuation_job(spec);
+            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()), static_cast<int>(j.seed_speeds.size()));
+          }};
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "cyclopt/service/walker_job_kinds.hpp"
 
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
@@ -49,6 +50,7 @@ void run_optimise(const nlohmann::json& spec, JobContext& ctx) {
   nlp::SolverOptions solver = job.solver;
   solver.on_iteration = solver_progress(
       ctx, {.parameter = v, .curve_id = 0, .points_done = 0, .points_total = 1, .message = "v = " + std::to_string(v) + " m/s"});
+  solver.should_stop = stop_predicate(ctx);
   const GaitOptimum opt = walker::optimise_gait(job.model(), problem_at(job, v), solver, job.start);
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.store_point(point_of(opt, {0, 0}, v));
@@ -70,6 +72,7 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   mo.base_seed = job.seed;
   mo.solver = job.solver;
   mo.solver.on_iteration = stop_requests(ctx);
+  mo.solver.should_stop = stop_predicate(ctx);
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
                        .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
   const nlp::MultistartResult r = nlp::multistart(
@@ -98,7 +101,8 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
 }
 
 JobKind walker_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
-  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run};
+  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run,
+          [task](const nlohmann::json& spec) { return walker_job_cost(parse_walker_job(spec, false), task, 1, 0); }};
 }
 
 }  // namespace
