@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -52,7 +53,9 @@ results database file directly (read-only) when given --db FILE.
                      (default FILE: jobJOB.html)
 
 Output of status, list, query: aligned table, or --json / --csv.
-Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE.
+Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
+--key-file FILE (sign requests and believe only answers signed with this key; default
+$CYCLOPT_KEY_FILE; README, Authentication).
 Exit codes: 0 ok; 1 bad usage; 2 rejected, not found, or job failed / cancelled;
 3 no answer from the server within the timeout; 4 database or file error.
 )";
@@ -62,7 +65,7 @@ enum Exit { kOk = 0, kUsage_ = 1, kRejected = 2, kNoAnswer = 3, kFileError = 4 }
 struct Options {
   std::string command;
   std::vector<std::string> positional;
-  std::string lcm_url, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
+  std::string lcm_url, key_file, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
       what = "solutions", result;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
@@ -106,6 +109,7 @@ Options parse_args(int argc, char** argv) {
       }
     };
     if (a == "--lcm-url") o.lcm_url = next();
+    else if (a == "--key-file") o.key_file = next();
     else if (a == "--timeout") o.timeout = number(next());
     else if (a == "--watch-timeout") o.watch_timeout = number(next());
     else if (a == "--db") o.db = next();
@@ -203,9 +207,14 @@ class Session {
 
   cyclopt::client::ServiceClient& remote() {
     if (!client_) {
-      lcm_.emplace(o_.lcm_url);
-      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + o_.lcm_url + "'");
-      client_.emplace(*lcm_);
+      const std::string url = cyclopt::wire::resolved_lcm_url(o_.lcm_url);
+      lcm_.emplace(url);
+      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
+      std::string key_file = o_.key_file;
+      if (const char* env = std::getenv("CYCLOPT_KEY_FILE"); key_file.empty() && env) key_file = env;
+      std::optional<cyclopt::wire::AuthKey> key;
+      if (!key_file.empty()) key = cyclopt::wire::read_key_file(key_file).keys.front();
+      client_.emplace(*lcm_, url, key);
     }
     return *client_;
   }

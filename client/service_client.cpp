@@ -29,24 +29,45 @@ std::string new_request_id() {
   return id;
 }
 
-ServiceClient::ServiceClient(lcm::LCM& lcm) : lcm_(lcm) {
-  lcm_.subscribe(channels::kAck, &ServiceClient::on_ack, this);
-  lcm_.subscribe(channels::kProgress, &ServiceClient::on_progress, this);
-  lcm_.subscribe(channels::kDone, &ServiceClient::on_done, this);
-  lcm_.subscribe(channels::kQueryReply, &ServiceClient::on_query_reply, this);
+ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url, std::optional<wire::AuthKey> key) : bus_(lcm, url) {
+  if (key) key_ = wire::KeyRing{{*key}};
+  bus_.subscribe(channels::kAck, [this](std::span<const std::uint8_t> p) { on_ack(p); });
+  bus_.subscribe(channels::kProgress, [this](std::span<const std::uint8_t> p) { on_progress(p); });
+  bus_.subscribe(channels::kDone, [this](std::span<const std::uint8_t> p) { on_done(p); });
+  bus_.subscribe(channels::kQueryReply, [this](std::span<const std::uint8_t> p) { on_query_reply(p); });
 }
 
-void ServiceClient::on_ack(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_ack_t* m) {
-  if (awaiting_.count(m->request_id)) acks_[m->request_id] = *m;
+template <class T>
+std::optional<T> ServiceClient::checked(const char* channel, std::span<const std::uint8_t> raw) {
+  const std::optional<wire::Signature> sig = wire::split_signature(raw);
+  std::string problem;
+  auto m = wire::decode_checked<T>(raw, problem);
+  if (!m) {
+    ++malformed_;
+    return m;
+  }
+  if (key_ && !wire::verify_signature(*key_, sig, channel, raw, m->request_id, wire::unix_now_us(), problem)) {
+    ++unverified_;
+    return std::nullopt;
+  }
+  return m;
 }
-void ServiceClient::on_progress(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_progress_t* m) {
-  if (progress_callback_ && m->job_id == watched_job_) (*progress_callback_)(*m);
+
+void ServiceClient::on_ack(std::span<const std::uint8_t> payload) {
+  const auto m = checked<cyclopt_lcm::job_ack_t>(channels::kAck, payload);
+  if (m && awaiting_.count(m->request_id)) acks_[m->request_id] = *m;
 }
-void ServiceClient::on_done(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_done_t* m) {
-  if (m->job_id == watched_job_) done_[m->job_id] = *m;
+void ServiceClient::on_progress(std::span<const std::uint8_t> payload) {
+  const auto m = checked<cyclopt_lcm::job_progress_t>(channels::kProgress, payload);
+  if (m && progress_callback_ && m->job_id == watched_job_) (*progress_callback_)(*m);
 }
-void ServiceClient::on_query_reply(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::query_reply_t* m) {
-  if (awaiting_.count(m->request_id)) replies_[m->request_id] = *m;
+void ServiceClient::on_done(std::span<const std::uint8_t> payload) {
+  const auto m = checked<cyclopt_lcm::job_done_t>(channels::kDone, payload);
+  if (m && m->job_id == watched_job_) done_[m->job_id] = *m;
+}
+void ServiceClient::on_query_reply(std::span<const std::uint8_t> payload) {
+  const auto m = checked<cyclopt_lcm::query_reply_t>(channels::kQueryReply, payload);
+  if (m && awaiting_.count(m->request_id)) replies_[m->request_id] = *m;
 }
 
 bool ServiceClient::pump_until(const std::function<bool()>& done, double s) {
@@ -54,7 +75,7 @@ bool ServiceClient::pump_until(const std::function<bool()>& done, double s) {
   while (!done()) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) return false;
-    lcm_.handleTimeout(static_cast<int>(std::clamp<long long>(left, 1, 50)));
+    bus_.handle_timeout(static_cast<int>(std::clamp<long long>(left, 1, 50)));
   }
   return true;
 }
@@ -78,7 +99,7 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::submit(const std::string& r
   std::optional<cyclopt_lcm::job_ack_t> ack;
   // Each round publishes once and then waits a full retry interval (or what is left).
   for (auto left = deadline - Clock::now(); !ack && left > std::chrono::milliseconds(1); left = deadline - Clock::now()) {
-    lcm_.publish(channels::kSubmit, &msg);
+    bus_.publish(channels::kSubmit, msg, key_ ? &key_->keys[0] : nullptr);
     ack = await(acks_, request_id, std::min(retry_seconds, std::chrono::duration<double>(left).count()));
   }
   awaiting_.erase(request_id);
@@ -90,7 +111,7 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::cancel(std::int64_t job_id,
   msg.request_id = new_request_id();
   msg.job_id = job_id;
   awaiting_.insert(msg.request_id);
-  lcm_.publish(channels::kCancel, &msg);
+  bus_.publish(channels::kCancel, msg, key_ ? &key_->keys[0] : nullptr);
   auto ack = await(acks_, msg.request_id, timeout_seconds);
   awaiting_.erase(msg.request_id);
   return ack;
@@ -100,6 +121,7 @@ std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest req
   storage::QueryPage all;
   const auto deadline = Clock::now() + seconds(timeout_seconds);
   int remaining = request.limit;
+  std::string row_text;  // the parts of a row too large for one reply, so far
   while (true) {
     cyclopt_lcm::query_request_t msg;
     msg.request_id = new_request_id();
@@ -108,8 +130,9 @@ std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest req
     msg.state = request.state;
     msg.offset = request.offset;
     msg.limit = std::min(remaining, channels::kMaxQueryLimit);
+    msg.part_offset = static_cast<int>(row_text.size());
     awaiting_.insert(msg.request_id);
-    lcm_.publish(channels::kQuery, &msg);
+    bus_.publish(channels::kQuery, msg, key_ ? &key_->keys[0] : nullptr);
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     const auto answer = await(replies_, msg.request_id, left);
     awaiting_.erase(msg.request_id);
@@ -117,7 +140,19 @@ std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest req
     const cyclopt_lcm::query_reply_t& reply = *answer;
     if (!reply.error.empty()) throw QueryError(reply.error);
     all.total = reply.total;
-    for (auto& row : nlohmann::json::parse(reply.rows_json)) all.rows.push_back(std::move(row));
+    if (reply.row_bytes > 0) {
+      if (reply.part_offset != msg.part_offset || reply.offset != msg.offset ||
+          row_text.size() + reply.rows_json.size() > static_cast<std::size_t>(reply.row_bytes))
+        throw QueryError("server sent part " + std::to_string(reply.part_offset) + " of row " +
+                         std::to_string(reply.offset) + " where part " + std::to_string(msg.part_offset) + " of row " +
+                         std::to_string(msg.offset) + " was asked for");
+      row_text += reply.rows_json;
+      if (row_text.size() < static_cast<std::size_t>(reply.row_bytes)) continue;
+      all.rows.push_back(nlohmann::json::parse(row_text));
+      row_text.clear();
+    } else {
+      for (auto& row : nlohmann::json::parse(reply.rows_json)) all.rows.push_back(std::move(row));
+    }
     remaining -= reply.row_count;
     if (reply.next_offset < 0 || remaining <= 0) return all;
     request.offset = reply.next_offset;
@@ -162,7 +197,7 @@ std::optional<cyclopt_lcm::job_done_t> ServiceClient::watch(
 std::optional<cyclopt_lcm::job_ack_t> ServiceClient::send_raw(const std::string& channel, const std::string& bytes,
                                                               const std::string& reply_id, double timeout_seconds) {
   awaiting_.insert(reply_id);
-  lcm_.publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
+  bus_.publish(channel, wire::as_bytes(bytes));
   auto ack = await(acks_, reply_id, timeout_seconds);
   awaiting_.erase(reply_id);
   return ack;

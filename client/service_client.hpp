@@ -1,7 +1,10 @@
 #pragma once
 // Client side of the LCM protocol (proto/lcm, cyclopt_channels.hpp): submissions retried until
-// acknowledged, cancellation, paged queries and progress watching. Works on any LCM instance,
-// including a memq:// one shared with an in-process server (the waits pump that instance).
+// acknowledged, cancellation, paged queries (rows too large for one reply are fetched in parts)
+// and progress watching. Works on any LCM instance, including a memq:// one shared with an
+// in-process server (the waits pump that instance). Every received payload is checked against
+// its type's wire layout before it is decoded (wire::decode_checked); malformed ones are counted
+// and ignored.
 
 #include <cyclopt_lcm/job_ack_t.hpp>
 #include <cyclopt_lcm/job_done_t.hpp>
@@ -9,6 +12,7 @@
 #include <cyclopt_lcm/query_reply_t.hpp>
 
 #include "cyclopt/storage/result_queries.hpp"
+#include "message_bus.hpp"
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -31,7 +35,11 @@ class QueryError : public std::runtime_error {
 
 class ServiceClient {
  public:
-  explicit ServiceClient(lcm::LCM& lcm);
+  // `url`: the one `lcm` was opened with (wire::resolved_lcm_url); udpm:// receives through the
+  // checked receiver of wire::MessageBus.
+  // key: with it every request is signed and only answers, progress and done messages signed
+  // with it are believed (message_auth.hpp); without it signatures are ignored.
+  explicit ServiceClient(lcm::LCM& lcm, const std::string& url = "", std::optional<wire::AuthKey> key = std::nullopt);
 
   // Publishes the submission every retry_seconds until an answer for request_id arrives or
   // timeout_seconds pass (nullopt). The answer may be a rejection (accepted = false).
@@ -51,19 +59,31 @@ class ServiceClient {
   // For tests: publishes arbitrary bytes and waits for the ack with request id `reply_id`.
   std::optional<cyclopt_lcm::job_ack_t> send_raw(const std::string& channel, const std::string& bytes,
                                                  const std::string& reply_id, double timeout_seconds);
+  // Received payloads that were not a well-formed encoding of their channel's type.
+  long malformed_received() const { return malformed_; }
+  // Well-formed messages dropped because they were not signed with this client's key.
+  long unverified_received() const { return unverified_; }
+
+  // The handlers of the four channels the client reads (public for the fuzz test).
+  void on_ack(std::span<const std::uint8_t> payload);
+  void on_progress(std::span<const std::uint8_t> payload);
+  void on_done(std::span<const std::uint8_t> payload);
+  void on_query_reply(std::span<const std::uint8_t> payload);
 
  private:
   bool pump_until(const std::function<bool()>& done, double seconds);
-  void on_ack(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_ack_t* m);
-  void on_progress(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_progress_t* m);
-  void on_done(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::job_done_t* m);
-  void on_query_reply(const lcm::ReceiveBuffer*, const std::string&, const cyclopt_lcm::query_reply_t* m);
+  // The message in `raw` if it is well-formed (and, with a key, signed with it).
+  template <class T>
+  std::optional<T> checked(const char* channel, std::span<const std::uint8_t> raw);
 
   // Waits for the answer to `id` (answers to other clients' requests are ignored).
   template <class Reply>
   std::optional<Reply> await(std::map<std::string, Reply>& answers, const std::string& id, double seconds);
 
-  lcm::LCM& lcm_;
+  wire::MessageBus bus_;
+  std::optional<wire::KeyRing> key_;
+  long malformed_ = 0;
+  long unverified_ = 0;
   std::set<std::string> awaiting_;  // request ids whose answers are kept
   std::map<std::string, cyclopt_lcm::job_ack_t> acks_;
   std::map<std::int64_t, cyclopt_lcm::job_done_t> done_;

@@ -12,6 +12,7 @@ packages=(
   liblcm-dev liblcm-bin         # LCM 1.3.1: library, lcm-gen, lcm-logger
   libglib2.0-dev                # needed by lcm.pc
   libsqlite3-dev sqlite3        # results database and the sqlite3 shell for queries
+  libssl-dev                    # OpenSSL libcrypto: HMAC-SHA256 message authentication
   nlohmann-json3-dev            # JSON specs
   libcairo2-dev fonts-dejavu-core  # plots (PNG, SVG, PDF) and their font
   libgtest-dev libgmock-dev     # unit tests

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   sigaction(SIGINT, &sa, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
 
+  config.lcm_url = wire::resolved_lcm_url(config.lcm_url);
   lcm::LCM lcm(config.lcm_url);
   if (!lcm.good()) {
     std::fprintf(stderr, "cycloptd: cannot open LCM at '%s'\n", config.lcm_url.c_str());
@@ -51,14 +52,20 @@ int main(int argc, char** argv) {
     for (const auto& t : kinds.tasks()) std::fprintf(stderr, " %s", t.c_str());
     std::fprintf(stderr, "; re-queued %d interrupted job(s), cancelled %d\n", srv.recovery().requeued,
                  srv.recovery().cancelled);
+    if (!srv.authenticates())
+      std::fprintf(stderr, "cycloptd: WARNING: no auth_secret_file in the config: anyone on the LCM network can "
+                           "submit, cancel and read jobs and forge this server's messages (README, Authentication)\n");
     srv.serve(g_stop);
     const auto& c = srv.counters();
     const long submissions = c.accepted + c.duplicates + c.rejected;
     std::fprintf(stderr,
-                 "cycloptd: stopping (accepted %ld, duplicates %ld, rejected %ld, queries %ld; "
+                 "cycloptd: stopping (accepted %ld, duplicates %ld, rejected %ld (unauthenticated %ld), queries %ld; "
                  "%.3f ms per submission handled)\n",
-                 c.accepted.load(), c.duplicates.load(), c.rejected.load(), c.queries.load(),
+                 c.accepted.load(), c.duplicates.load(), c.rejected.load(), c.unauthenticated.load(), c.queries.load(),
                  submissions > 0 ? 1e3 * c.submit_seconds / submissions : 0.0);
+    if (const auto* d = srv.bus().datagram_counters())
+      std::fprintf(stderr, "cycloptd: datagrams %ld: %ld messages, %ld malformed, %ld oversize, %ld incomplete dropped\n",
+                   d->datagrams, d->messages, d->malformed, d->oversize, d->dropped_assemblies);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cycloptd: %s\n", e.what());
     return 2;

@@ -11,6 +11,7 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -20,17 +21,10 @@ namespace {
 
 // A too-long request id is still echoed (up to this length) so its sender sees the rejection.
 constexpr std::size_t kMaxEchoedRequestIdBytes = 1024;
+constexpr int kRowsPerReply = 32;
 
-// Decodes a message of type T, or returns false.
-template <class T>
-bool decode(const lcm::ReceiveBuffer* rbuf, T& msg) {
-  return rbuf->data_size > 0 && rbuf->data_size < (1u << 30) &&
-         msg.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) >= 0;
-}
-
-std::string undecodable(const std::string& channel, const lcm::ReceiveBuffer* rbuf, const char* type) {
-  return std::string(channel) + ": undecodable message of " + std::to_string(rbuf->data_size) + " bytes: not a cyclopt_lcm." + type +
-         " (wrong type fingerprint or truncated)";
+std::string undecodable(const char* channel, const std::string& problem) {
+  return std::string(channel) + ": undecodable message: " + problem;
 }
 
 // Checks a client request id; returns the problem or "".
@@ -46,16 +40,38 @@ std::string request_id_problem(const std::string& id) {
 }  // namespace
 
 RequestHandler::RequestHandler(const ServerConfig& config, const service::JobKindRegistry& kinds,
-                               storage::ResultStore& store, LcmPublisher& publisher, WorkerPool& pool)
-    : config_(config), kinds_(kinds), store_(store), publisher_(publisher), pool_(pool) {}
+                               storage::ResultStore& store, LcmPublisher& publisher, WorkerPool& pool,
+                               const wire::KeyRing* keys, JobOwners* owners)
+    : config_(config), kinds_(kinds), store_(store), publisher_(publisher), pool_(pool), keys_(keys), owners_(owners) {}
 
-void RequestHandler::subscribe(lcm::LCM& lcm) {
-  lcm.subscribe(channels::kSubmit, &RequestHandler::on_submit, this);
-  lcm.subscribe(channels::kCancel, &RequestHandler::on_cancel, this);
-  lcm.subscribe(channels::kQuery, &RequestHandler::on_query, this);
+template <class T>
+std::optional<T> RequestHandler::receive(std::span<const std::uint8_t> raw, const char* channel,
+                                         const wire::AuthKey*& key) {
+  key = nullptr;
+  const std::optional<wire::Signature> sig = wire::split_signature(raw);
+  std::string problem;
+  auto msg = wire::decode_checked<T>(raw, problem);
+  if (!msg) {
+    reject("", channel, undecodable(channel, problem));
+    return std::nullopt;
+  }
+  if (!keys_) return msg;
+  key = wire::verify_signature(*keys_, sig, channel, raw, msg->request_id, wire::unix_now_us(), problem);
+  if (key) return msg;
+  ++counters_.unauthenticated;
+  reject(msg->request_id, "signature", std::string("signature: ") + problem + " (this server accepts only messages "
+                                           "signed with a key of its key file)");
+  return std::nullopt;
 }
 
-void RequestHandler::reject(const std::string& request_id, const std::string& field, const std::string& problem) {
+void RequestHandler::subscribe(wire::MessageBus& bus) {
+  bus.subscribe(channels::kSubmit, [this](std::span<const std::uint8_t> p) { on_submit(p); });
+  bus.subscribe(channels::kCancel, [this](std::span<const std::uint8_t> p) { on_cancel(p); });
+  bus.subscribe(channels::kQuery, [this](std::span<const std::uint8_t> p) { on_query(p); });
+}
+
+void RequestHandler::reject(const std::string& request_id, const std::string& field, const std::string& problem,
+                            const wire::AuthKey* key) {
   ++counters_.rejected;
   cyclopt_lcm::job_ack_t ack;
   ack.request_id = request_id.substr(0, kMaxEchoedRequestIdBytes);
@@ -64,41 +80,44 @@ void RequestHandler::reject(const std::string& request_id, const std::string& fi
   ack.duplicate = false;
   ack.field = field;
   ack.problem = problem.substr(0, 2000);
-  publisher_.publish(channels::kAck, ack);
+  publisher_.publish_signed(channels::kAck, ack, key);
 }
 
 void RequestHandler::accept(const std::string& request_id, std::int64_t job_id, bool duplicate,
-                            const std::string& state) {
+                            const std::string& state, const wire::AuthKey* key) {
   cyclopt_lcm::job_ack_t ack;
   ack.request_id = request_id;
   ack.accepted = true;
   ack.job_id = job_id;
   ack.duplicate = duplicate;
   ack.state = state;
-  publisher_.publish(channels::kAck, ack);
+  publisher_.publish_signed(channels::kAck, ack, key);
 }
 
-void RequestHandler::on_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+void RequestHandler::on_submit(std::span<const std::uint8_t> payload) {
   const auto t0 = std::chrono::steady_clock::now();
-  handle_submit(rbuf, channel);
+  handle_submit(payload);
   counters_.submit_seconds =
       counters_.submit_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  cyclopt_lcm::job_submit_t msg;
-  if (!decode(rbuf, msg)) return reject("", channel, undecodable(channel, rbuf, "job_submit_t"));
+void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::job_submit_t>(payload, channels::kSubmit, key);
+  if (!decoded) return;
+  const cyclopt_lcm::job_submit_t& msg = *decoded;
   try {
     if (const std::string p = request_id_problem(msg.request_id); !p.empty())
-      return reject(msg.request_id, "request_id", "request_id: " + p);
+      return reject(msg.request_id, "request_id", "request_id: " + p, key);
     if (msg.spec_json.size() > channels::kMaxSpecBytes)
       return reject(msg.request_id, "spec_json",
                     "spec_json: oversize, " + std::to_string(msg.spec_json.size()) + " bytes, at most " +
-                        std::to_string(channels::kMaxSpecBytes) + " allowed");
+                        std::to_string(channels::kMaxSpecBytes) + " allowed",
+                    key);
     const service::ValidatedJobSpec v = service::validate_job_spec(service::parse_job_spec_text(msg.spec_json), kinds_);
     const service::JobCost cost = v.kind->estimate ? v.kind->estimate(v.spec) : service::JobCost{};
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
-    const std::string sender;  // every client is anonymous until messages are authenticated
+    const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
     const storage::SubmitOutcome out =
         store_.submit({msg.request_id, v.scene, v.task, msg.spec_json, sender, cost.seconds}, config_.quota);
     if (out.over_quota)
@@ -108,43 +127,57 @@ void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::st
                         service::duration_text(cost.seconds) + ") that exceeds the quota of " +
                         std::to_string(config_.quota.max_queued_jobs) + " jobs or " +
                         service::duration_text(config_.quota.max_queued_seconds) +
-                        " per sender (cycloptd --max-queued-jobs, --max-queued-hours); resubmit when some have run");
+                        " per sender (cycloptd --max-queued-jobs, --max-queued-hours); resubmit when some have run",
+                    key);
     if (out.spec_differs)
       return reject(msg.request_id, "request_id",
-                    "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec");
+                    "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec", key);
+    if (!out.duplicate && key) owners_->record(out.job_id, *key);
     ++(out.duplicate ? counters_.duplicates : counters_.accepted);
-    accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)));
+    accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)), key);
     if (!out.duplicate) pool_.wake();
   } catch (const service::SpecError& e) {
-    reject(msg.request_id, e.field(), e.what());
+    reject(msg.request_id, e.field(), e.what(), key);
   } catch (const std::exception& e) {
-    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);
   } catch (...) {
-    reject(msg.request_id, "server", "server: internal error");
+    reject(msg.request_id, "server", "server: internal error", key);
   }
 }
 
-void RequestHandler::on_cancel(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  cyclopt_lcm::job_cancel_t msg;
-  if (!decode(rbuf, msg)) return reject("", channel, undecodable(channel, rbuf, "job_cancel_t"));
+void RequestHandler::on_cancel(std::span<const std::uint8_t> payload) {
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::job_cancel_t>(payload, channels::kCancel, key);
+  if (!decoded) return;
+  const cyclopt_lcm::job_cancel_t& msg = *decoded;
   try {
+    if (key && !key->admin) {
+      const wire::AuthKey* owner = owners_->owner(msg.job_id);
+      if (owner != key && store_.job(msg.job_id))
+        return reject(msg.request_id, "job_id",
+                      "job_id: job " + std::to_string(msg.job_id) + " was not submitted with key '" + key->id +
+                          "'; only its submitter's key or an admin key may cancel it",
+                      key);
+    }
     const storage::CancelOutcome out = store_.cancel(msg.job_id);
     if (out == storage::CancelOutcome::not_found)
-      return reject(msg.request_id, "job_id", "job_id: no job " + std::to_string(msg.job_id));
+      return reject(msg.request_id, "job_id", "job_id: no job " + std::to_string(msg.job_id), key);
     if (out == storage::CancelOutcome::already_final)
-      return reject(msg.request_id, "job_id", "job_id: job " + std::to_string(msg.job_id) + " has already finished");
+      return reject(msg.request_id, "job_id", "job_id: job " + std::to_string(msg.job_id) + " has already finished", key);
     pool_.cancel(msg.job_id);
-    accept(msg.request_id, msg.job_id, false, out == storage::CancelOutcome::cancelled ? "cancelled" : "running");
+    accept(msg.request_id, msg.job_id, false, out == storage::CancelOutcome::cancelled ? "cancelled" : "running", key);
   } catch (const std::exception& e) {
-    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what());
+    reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);
   } catch (...) {
-    reject(msg.request_id, "server", "server: internal error");
+    reject(msg.request_id, "server", "server: internal error", key);
   }
 }
 
-void RequestHandler::on_query(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  cyclopt_lcm::query_request_t msg;
-  if (!decode(rbuf, msg)) return reject("", channel, undecodable(channel, rbuf, "query_request_t"));
+void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
+  const wire::AuthKey* key = nullptr;
+  const auto decoded = receive<cyclopt_lcm::query_request_t>(payload, channels::kQuery, key);
+  if (!decoded) return;
+  const cyclopt_lcm::query_request_t& msg = *decoded;
   ++counters_.queries;
   cyclopt_lcm::query_reply_t reply;
   reply.request_id = msg.request_id.substr(0, kMaxEchoedRequestIdBytes);
@@ -153,32 +186,61 @@ void RequestHandler::on_query(const lcm::ReceiveBuffer* rbuf, const std::string&
   reply.total = 0;
   reply.next_offset = -1;
   reply.rows_json = "[]";
+  reply.row_bytes = 0;
+  reply.part_offset = 0;
   try {
-    const storage::QueryPage page =
-        storage::run_query(store_, {msg.what, msg.job_id, msg.state, msg.offset, msg.limit});
-    // Cut the page so the message stays below kMaxQueryReplyRowBytes.
+    if (msg.part_offset < 0) throw std::invalid_argument("part_offset: must be >= 0, got " + std::to_string(msg.part_offset));
+    const bool cached = msg.part_offset > 0 && parted_.what == msg.what && parted_.job_id == msg.job_id &&
+                        parted_.state == msg.state && parted_.offset == msg.offset;
+    // At most kRowsPerReply rows are read: a reply carries 48 KiB, and result rows can be large.
+    const storage::QueryPage page = storage::run_query(
+        store_, {msg.what, msg.job_id, msg.state, msg.offset, std::min(msg.limit, cached ? 1 : kRowsPerReply)});
+    reply.total = page.total;
+    // Rows as ASCII text (non-ASCII escaped), so that a row can be cut into parts at any byte.
     std::string rows = "[";
     int n = 0;
+    bool parted = cached;
     for (const auto& row : page.rows) {
-      const std::string text = row.dump();
-      if (text.size() + 2 > channels::kMaxQueryReplyRowBytes)
-        throw std::length_error("row " + std::to_string(msg.offset + n) + " is " + std::to_string(text.size()) +
-                                " bytes, more than a reply can carry; read it with --db");
+      if (cached) break;
+      std::string text = row.dump(-1, ' ', true);
+      if (n == 0 && (msg.part_offset > 0 || text.size() + 2 > channels::kMaxQueryReplyRowBytes)) {
+        parted_ = {msg.what, msg.state, msg.job_id, msg.offset, std::move(text)};
+        parted = true;
+        break;
+      }
       if (rows.size() + text.size() + 2 > channels::kMaxQueryReplyRowBytes) break;
       rows += (n ? "," : "") + text;
       ++n;
     }
-    reply.rows_json = rows + "]";
-    reply.row_count = n;
-    reply.total = page.total;
-    const int next = msg.offset + n;
-    reply.next_offset = next < page.total && n > 0 ? next : -1;
+    if (parted) {
+      // Row `offset` alone is too large for a reply: send the part of it that starts at part_offset.
+      const std::string& text = parted_.text;
+      if (static_cast<std::size_t>(msg.part_offset) >= text.size())
+        throw std::invalid_argument("part_offset: row " + std::to_string(msg.offset) + " has " +
+                                    std::to_string(text.size()) + " bytes, got " + std::to_string(msg.part_offset));
+      reply.rows_json = text.substr(static_cast<std::size_t>(msg.part_offset), channels::kMaxQueryReplyRowBytes);
+      reply.row_bytes = static_cast<int>(text.size());
+      reply.part_offset = msg.part_offset;
+      const bool last = msg.part_offset + reply.rows_json.size() == text.size();
+      reply.row_count = last ? 1 : 0;
+      reply.next_offset = !last ? msg.offset : msg.offset + 1 < page.total ? msg.offset + 1 : -1;
+    } else if (msg.part_offset > 0) {
+      throw std::invalid_argument("part_offset: there is no row " + std::to_string(msg.offset));
+    } else {
+      reply.rows_json = rows + "]";
+      reply.row_count = n;
+      const int next = msg.offset + n;
+      reply.next_offset = next < page.total && n > 0 ? next : -1;
+    }
   } catch (const std::exception& e) {
+    reply.rows_json = "[]";
+    reply.row_count = 0;
+    reply.row_bytes = 0;
     reply.error = e.what();
   } catch (...) {
     reply.error = "server: internal error";
   }
-  publisher_.publish(channels::kQueryReply, reply);
+  publisher_.publish_signed(channels::kQueryReply, reply, key);
 }
 
 }  // namespace cyclopt::server

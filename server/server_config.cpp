@@ -50,8 +50,10 @@ void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
     if (!v.is_object()) throw SpecError(key, "must be an object of Slurm settings");
     for (const auto& [k, value] : v.items()) apply_slurm(c.slurm, k, value);
   } else if (key == "slurm_spool") c.slurm.spool = string_value(v, key, 4096);
+  else if (key == "auth_secret_file") c.auth_secret_file = string_value(v, key, 4096);
   else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, "
-                            "max_job_memory_mb, max_queued_jobs, max_queued_hours, progress_hz, executor, slurm)");
+                            "max_job_memory_mb, max_queued_jobs, max_queued_hours, progress_hz, executor, slurm, "
+                            "auth_secret_file)");
 }
 
 }  // namespace
@@ -78,6 +80,7 @@ ServerConfig server_config_from_args(const std::vector<std::string>& args) {
     std::string key = a.substr(2);
     for (char& ch : key)
       if (ch == '-') ch = '_';
+    if (key == "auth_secret_file") throw std::invalid_argument(a + ": set auth_secret_file in the --config file");
     const bool text = key == "database" || key == "lcm_url" || key == "executor" || key == "slurm_spool";
     nlohmann::json v = text ? nlohmann::json(value) : nlohmann::json::parse(value, nullptr, false);
     if (v.is_discarded()) v = value;  // reported as a type error by apply()

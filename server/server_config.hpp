@@ -6,7 +6,9 @@
 //    "max_queued_jobs": 100, "max_queued_hours": 168, "progress_hz": 5,
 //    "executor": "slurm", "slurm": {"spool": "/shared/cyclopt-spool", "partition": "batch", "account": "lab",
 //                                   "cpus_per_unit": 2, "time_limit_minutes": 120, "max_submissions": 4,
-//                                   "poll_seconds": 0.5, "worker": "/usr/local/bin/cyclopt-worker"}}
+//                                   "poll_seconds": 0.5, "worker": "/usr/local/bin/cyclopt-worker"},
+//    "auth_secret_file": "/etc/cyclopt/keys"}
+// auth_secret_file (message_auth.hpp) is accepted in the config file only.
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/storage/result_store.hpp"
@@ -27,6 +29,7 @@ struct ServerConfig {
   double progress_hz = 5.0;  // progress messages per second and job, at most
   std::string executor = "local";  // local: worker threads run the jobs; slurm: workers dispatch them to Slurm
   remote::SlurmOptions slurm;      // with executor "slurm"
+  std::string auth_secret_file;  // empty: messages are not authenticated (a warning at start)
 };
 
 // Throws std::invalid_argument naming the key and the admissible range.
@@ -48,8 +51,9 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
 
   --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
                          max_job_iterations, max_job_memory_mb, max_queued_jobs,
-                         max_queued_hours, progress_hz, executor, slurm (flags given after
-                         it override it)
+                         max_queued_hours, progress_hz, executor, slurm, auth_secret_file
+                         (flags given after it override it; the key file path is read from
+                         the config file only)
   --database FILE        results database (default cyclopt.db; created if missing)
   --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)

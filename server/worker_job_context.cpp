@@ -88,7 +88,9 @@ void WorkerJobContext::report_progress(const service::ProgressReport& report) {
 
 void WorkerJobContext::flush_progress() {
   std::lock_guard lock(progress_mutex_);
-  if (pending_) publish(*pending_);
+  if (!pending_) return;
+  const service::ProgressReport last = *pending_;  // publish() resets pending_ before it reads the report
+  publish(last);
 }
 
 void WorkerJobContext::publish(const service::ProgressReport& r) {

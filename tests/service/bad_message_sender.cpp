@@ -23,18 +23,11 @@ struct BadMessage {
   std::string field;     // the field the rejection must name
 };
 
-template <class T>
-std::string encode(const T& m) {
-  std::string out(static_cast<std::size_t>(m.getEncodedSize()), '\0');
-  m.encode(out.data(), 0, static_cast<int>(out.size()));
-  return out;
-}
-
 std::string submit_bytes(const std::string& id, const std::string& spec) {
   cyclopt_lcm::job_submit_t m;
   m.request_id = id;
   m.spec_json = spec;
-  return encode(m);
+  return cyclopt::wire::encode(m);
 }
 
 BadMessage make(int i, std::mt19937& rng) {
@@ -72,7 +65,7 @@ BadMessage make(int i, std::mt19937& rng) {
       cyclopt_lcm::job_cancel_t c;
       c.request_id = id;
       c.job_id = -5 - i;
-      return {cyclopt::channels::kCancel, encode(c), id, "job_id"};
+      return {cyclopt::channels::kCancel, cyclopt::wire::encode(c), id, "job_id"};
     }
     default: {
       std::string b = "garbage on the query channel " + std::to_string(rng());
@@ -91,9 +84,10 @@ int main(int argc, char** argv) {
     if (a == "--lcm-url") url = argv[i + 1];
     else if (a == "--count") count = std::stoi(argv[i + 1]);
   }
+  url = cyclopt::wire::resolved_lcm_url(url);
   lcm::LCM lcm(url);
   if (!lcm.good()) return 2;
-  cyclopt::client::ServiceClient client(lcm);
+  cyclopt::client::ServiceClient client(lcm, url);
   std::mt19937 rng(12345);
   int answered = 0, named = 0;
   for (int i = 0; i < count; ++i) {

@@ -3,6 +3,7 @@
 // rejected naming the field and its range.
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -27,6 +28,34 @@ TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
   EXPECT_TRUE(values["gait"]["real"].get<bool>());
   EXPECT_NEAR(values["gait"]["mean_speed"].get<double>(), 1.0, 1e-8);
   EXPECT_EQ(values["x"].size(), 20u);  // point feet: (M - 1) n_b = 5 x 4
+}
+
+// Issue 17 item 5: what `cyclopt export`, `plot` and `report` fetch (the job row and every part)
+// arrives through the server whole, although a walker trajectory row exceeds one reply.
+TEST_F(WalkerJobs, ExportThroughTheServerCarriesRowsLargerThanOneReply) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = client_.submit("export-1", walker_spec("evaluate").dump(), 5.0);
+  ASSERT_TRUE(ack && ack->accepted);
+  const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
+  ASSERT_TRUE(done);
+  ASSERT_EQ(done->state, "done") << done->error;
+  std::size_t largest = 0;
+  for (const std::string what : {"job", "events", "curves", "solutions", "trajectories"}) {
+    storage::QueryRequest r = storage::query_for(what, ack->job_id);
+    r.limit = 1000;
+    const auto remote = client_.query(r, 10.0);
+    ASSERT_TRUE(remote) << what;
+    const storage::QueryPage local = storage::run_query(srv.store(), r);
+    EXPECT_EQ(remote->total, local.total) << what;
+    ASSERT_EQ(remote->rows.size(), local.rows.size()) << what;
+    for (std::size_t i = 0; i < local.rows.size(); ++i) {
+      EXPECT_EQ(remote->rows[i], local.rows[i]) << what << " row " << i;
+      largest = std::max(largest, local.rows[i].dump().size());
+    }
+  }
+  std::printf("largest row through the server: %zu bytes (one reply carries %zu)\n", largest,
+              channels::kMaxQueryReplyRowBytes);
+  EXPECT_GT(largest, channels::kMaxQueryReplyRowBytes);
 }
 
 TEST_F(WalkerJobs, OptimiseLowersTheCostOfTransport) {

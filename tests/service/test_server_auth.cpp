@@ -1,0 +1,146 @@
+// Authentication (issue 19, acceptance 2) over memq://: with a key file, unsigned, stale and
+// forged requests are rejected and counted, a job can be cancelled only by its submitter's key
+// or an admin key, replayed requests stay idempotent, and a client believes no ack, progress or
+// done message that is not signed with its key.
+#include "cyclopt_channels.hpp"
+#include "memq_server_fixture.hpp"
+#include "message_auth.hpp"
+
+#include <cyclopt_lcm/job_submit_t.hpp>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace cyclopt {
+namespace {
+
+std::string sweep(int points, int delay_ms) {
+  return nlohmann::json{{"scene", "walker"},
+                        {"task", "foot_sweep"},
+                        {"foot", "P2-shoes-left-HMT"},
+                        {"point_delay_ms", delay_ms},
+                        {"sweep", {{"parameter", "density"}, {"values", "1:1:" + std::to_string(points)}}}}
+      .dump();
+}
+
+class ServerAuth : public testing::MemqServerTest {
+ protected:
+  void SetUp() override {
+    MemqServerTest::SetUp();
+    const auto path = dir_ / "keys";
+    std::ofstream(path) << "# id secret [admin]\nalice alice-secret-0123456789\nbob bob-secret-0123456789abc\n"
+                           "root root-secret-0123456789ab admin\n";
+    std::filesystem::permissions(path, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+    config_.auth_secret_file = path.string();
+    ring_ = wire::read_key_file(path.string());
+  }
+  const wire::AuthKey& key(const std::string& id) { return *ring_.find(id); }
+  wire::KeyRing ring_;
+};
+
+TEST_F(ServerAuth, KeyFilesAreCheckedLineByLine) {
+  const auto path = dir_ / "bad";
+  std::ofstream(path) << "alice short\n";
+  std::filesystem::permissions(path, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+  EXPECT_THROW(wire::read_key_file(path.string()), std::invalid_argument);
+  std::filesystem::permissions(path, std::filesystem::perms::others_read, std::filesystem::perm_options::add);
+  try {
+    wire::read_key_file(path.string());
+    ADD_FAILURE() << "a world-readable key file was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("chmod 600"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ServerAuth, UnsignedStaleAndForeignRequestsAreRejected) {
+  server::Server srv(config_, kinds_, lcm_);
+  ASSERT_TRUE(srv.authenticates());
+  client::ServiceClient alice(lcm_, "", key("alice")), bob(lcm_, "", key("bob")), root(lcm_, "", key("root"));
+
+  // Unsigned (the fixture's client has no key): rejected naming the signature.
+  const auto unsigned_ack = client_.submit("anon-1", sweep(3, 0), 5.0);
+  ASSERT_TRUE(unsigned_ack);
+  EXPECT_FALSE(unsigned_ack->accepted);
+  EXPECT_EQ(unsigned_ack->field, "signature");
+  EXPECT_NE(unsigned_ack->problem.find("unsigned message"), std::string::npos) << unsigned_ack->problem;
+
+  // Signed by alice: accepted; bob may not cancel it, an admin key may.
+  const auto ack = alice.submit("alice-1", sweep(200, 20), 5.0);
+  ASSERT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
+  const auto by_bob = bob.cancel(ack->job_id, 5.0);
+  ASSERT_TRUE(by_bob);
+  EXPECT_FALSE(by_bob->accepted);
+  EXPECT_EQ(by_bob->field, "job_id");
+  EXPECT_NE(by_bob->problem.find("only its submitter's key or an admin key"), std::string::npos) << by_bob->problem;
+  const auto by_root = root.cancel(ack->job_id, 5.0);
+  ASSERT_TRUE(by_root);
+  EXPECT_TRUE(by_root->accepted) << by_root->problem;
+  const auto second = alice.submit("alice-2", sweep(200, 20), 5.0);
+  ASSERT_TRUE(second && second->accepted);
+  const auto by_alice = alice.cancel(second->job_id, 5.0);
+  ASSERT_TRUE(by_alice);
+  EXPECT_TRUE(by_alice->accepted) << by_alice->problem;
+
+  // A correctly signed request two minutes old is stale; a replayed fresh one is idempotent.
+  cyclopt_lcm::job_submit_t m;
+  m.request_id = "alice-3";
+  m.spec_json = sweep(3, 0);
+  const std::string payload = wire::encode(m);
+  const std::string stale = payload + wire::signature_trailer(key("alice"), channels::kSubmit, wire::as_bytes(payload),
+                                                               m.request_id, wire::unix_now_us() - 120'000'000);
+  const auto stale_ack = client_.send_raw(channels::kSubmit, stale, "alice-3", 5.0);
+  ASSERT_TRUE(stale_ack);
+  EXPECT_FALSE(stale_ack->accepted);
+  EXPECT_NE(stale_ack->problem.find("stale timestamp"), std::string::npos) << stale_ack->problem;
+  const std::string fresh = payload + wire::signature_trailer(key("alice"), channels::kSubmit, wire::as_bytes(payload),
+                                                               m.request_id, wire::unix_now_us());
+  const auto first = client_.send_raw(channels::kSubmit, fresh, "alice-3", 5.0);
+  const auto replay = client_.send_raw(channels::kSubmit, fresh, "alice-3", 5.0);
+  ASSERT_TRUE(first && replay);
+  EXPECT_TRUE(first->accepted && !first->duplicate) << first->problem;
+  EXPECT_TRUE(replay->accepted && replay->duplicate) << replay->problem;
+  EXPECT_EQ(replay->job_id, first->job_id);
+  // The same bytes with the signature of another key's secret: forged.
+  wire::AuthKey forger = key("alice");
+  forger.secret = "not-alices-secret-at-all";
+  const std::string forged = payload + wire::signature_trailer(forger, channels::kSubmit, wire::as_bytes(payload),
+                                                                "alice-4", wire::unix_now_us());
+  const auto forged_ack = client_.send_raw(channels::kSubmit, forged, "alice-3", 5.0);
+  ASSERT_TRUE(forged_ack);
+  EXPECT_NE(forged_ack->problem.find("bad signature"), std::string::npos) << forged_ack->problem;
+  EXPECT_EQ(srv.counters().unauthenticated, 3);
+}
+
+TEST_F(ServerAuth, ClientsBelieveOnlyMessagesSignedWithTheirKey) {
+  server::Server srv(config_, kinds_, lcm_);
+  client::ServiceClient alice(lcm_, "", key("alice"));
+  wire::MessageBus rogue(lcm_, "");  // a stranger on the network, or another client's key
+  // Forged acks for alice's next request, queued before it: a rejection unsigned, one signed by bob.
+  cyclopt_lcm::job_ack_t fake{"alice-w", false, -1, false, "", "spec_json", "forged rejection"};
+  rogue.publish(channels::kAck, fake);
+  rogue.publish(channels::kAck, fake, &key("bob"));
+  const auto ack = alice.submit("alice-w", sweep(30, 20), 5.0);
+  ASSERT_TRUE(ack);
+  EXPECT_TRUE(ack->accepted) << "believed: " << ack->problem;
+  // Forged done messages for the watched job: the watch ends with the server's real one.
+  cyclopt_lcm::job_done_t fake_done{ack->job_id, "alice-w", "failed", 0, 0.0, 0.0, "forged"};
+  rogue.publish(channels::kDone, fake_done);
+  rogue.publish(channels::kDone, fake_done, &key("bob"));
+  cyclopt_lcm::job_progress_t fake_progress{ack->job_id, "alice-w", "foot_sweep", 0, 0, 0, 0, 0, 0, 99, 100, 99.0, 0,
+                                            "forged"};
+  rogue.publish(channels::kProgress, fake_progress);
+  int forged_progress = 0, real_progress = 0;
+  const auto done = alice.watch(ack->job_id, [&](const cyclopt_lcm::job_progress_t& p) {
+    ++(p.message == "forged" ? forged_progress : real_progress);
+  }, 30.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "done") << done->error;
+  EXPECT_EQ(done->points_stored, 30);
+  EXPECT_EQ(forged_progress, 0);
+  EXPECT_GT(real_progress, 0);
+  EXPECT_GE(alice.unverified_received(), 5);
+}
+
+}  // namespace
+}  // namespace cyclopt
