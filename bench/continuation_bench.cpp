@@ -8,7 +8,7 @@
 //
 // usage: continuation_bench [foot = P1-barefoot-left-HM] [from = 1.3] [to = 2.3] [methods = qpsqp,ipopt,fixed]
 #include "cyclopt/continuation/continuation_solver.hpp"
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -19,6 +19,7 @@
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
 
 namespace {
 

@@ -9,7 +9,7 @@
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off.
 #include "bench_foot.hpp"
-#include "cyclopt/continuation/speed_sweep.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
 #include "machine_info.hpp"
 
 #include <chrono>
@@ -20,6 +20,7 @@
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);

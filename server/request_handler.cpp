@@ -45,9 +45,9 @@ std::string request_id_problem(const std::string& id) {
 
 }  // namespace
 
-RequestHandler::RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store,
-                               LcmPublisher& publisher, WorkerPool& pool)
-    : kinds_(kinds), store_(store), publisher_(publisher), pool_(pool) {}
+RequestHandler::RequestHandler(const ServerConfig& config, const service::JobKindRegistry& kinds,
+                               storage::ResultStore& store, LcmPublisher& publisher, WorkerPool& pool)
+    : config_(config), kinds_(kinds), store_(store), publisher_(publisher), pool_(pool) {}
 
 void RequestHandler::subscribe(lcm::LCM& lcm) {
   lcm.subscribe(channels::kSubmit, &RequestHandler::on_submit, this);
@@ -96,7 +96,19 @@ void RequestHandler::handle_submit(const lcm::ReceiveBuffer* rbuf, const std::st
                     "spec_json: oversize, " + std::to_string(msg.spec_json.size()) + " bytes, at most " +
                         std::to_string(channels::kMaxSpecBytes) + " allowed");
     const service::ValidatedJobSpec v = service::validate_job_spec(service::parse_job_spec_text(msg.spec_json), kinds_);
-    const storage::SubmitOutcome out = store_.submit(msg.request_id, v.scene, v.task, msg.spec_json);
+    const service::JobCost cost = v.kind->estimate ? v.kind->estimate(v.spec) : service::JobCost{};
+    service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
+    const std::string sender;  // every client is anonymous until messages are authenticated
+    const storage::SubmitOutcome out =
+        store_.submit({msg.request_id, v.scene, v.task, msg.spec_json, sender, cost.seconds}, config_.quota);
+    if (out.over_quota)
+      return reject(msg.request_id, "queue",
+                    "queue: sender '" + sender + "' has " + std::to_string(out.queued_jobs) + " queued jobs estimated at " +
+                        service::duration_text(out.queued_seconds) + "; with this one (" +
+                        service::duration_text(cost.seconds) + ") that exceeds the quota of " +
+                        std::to_string(config_.quota.max_queued_jobs) + " jobs or " +
+                        service::duration_text(config_.quota.max_queued_seconds) +
+                        " per sender (cycloptd --max-queued-jobs, --max-queued-hours); resubmit when some have run");
     if (out.spec_differs)
       return reject(msg.request_id, "request_id",
                     "request_id: already used by job " + std::to_string(out.job_id) + " with a different spec");

@@ -2,11 +2,14 @@
 // Answers every message on CYCLOPT_SUBMIT, CYCLOPT_CANCEL and CYCLOPT_QUERY. Nothing a client
 // sends can crash the server: undecodable bytes, malformed JSON, wrong types, out-of-range or
 // oversize values are each answered by a job_ack_t rejection whose field and problem name
-// what was wrong (query errors arrive as a query_reply_t with error set).
+// what was wrong (query errors arrive as a query_reply_t with error set). A valid job whose
+// estimated cost exceeds the server's limits, or whose sender's queue quota is used up, is
+// rejected too (field: the spec field driving the cost, or "queue").
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
+#include "server_config.hpp"
 #include "worker_pool.hpp"
 
 #include <lcm/lcm-cpp.hpp>
@@ -26,8 +29,8 @@ struct RequestCounters {
 
 class RequestHandler {
  public:
-  RequestHandler(const service::JobKindRegistry& kinds, storage::ResultStore& store, LcmPublisher& publisher,
-                 WorkerPool& pool);
+  RequestHandler(const ServerConfig& config, const service::JobKindRegistry& kinds, storage::ResultStore& store,
+                 LcmPublisher& publisher, WorkerPool& pool);
   void subscribe(lcm::LCM& lcm);
   const RequestCounters& counters() const { return counters_; }
 
@@ -40,6 +43,7 @@ class RequestHandler {
   void accept(const std::string& request_id, std::int64_t job_id, bool duplicate, const std::string& state);
   void reject(const std::string& request_id, const std::string& field, const std::string& problem);
 
+  const ServerConfig& config_;
   const service::JobKindRegistry& kinds_;
   storage::ResultStore& store_;
   LcmPublisher& publisher_;

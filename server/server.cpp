@@ -9,7 +9,7 @@ Server::Server(const ServerConfig& config, const service::JobKindRegistry& kinds
       recovery_(store_.recover_interrupted()),
       publisher_(lcm_),
       pool_(config_, kinds, store_, publisher_),
-      handler_(kinds, store_, publisher_, pool_) {
+      handler_(config_, kinds, store_, publisher_, pool_) {
   handler_.subscribe(lcm_);
 }
 

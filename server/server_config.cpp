@@ -20,8 +20,14 @@ void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
   else if (key == "workers") c.workers = integer_value(v, key, 1, 256);
   else if (key == "max_job_seconds") c.caps.max_wall_seconds = number_value(v, key, 1e-3, 7 * 86400.0);
   else if (key == "max_job_iterations") c.caps.max_iterations = integer_value(v, key, 1, 1000000000);
-  else if (key == "progress_hz") c.progress_hz = number_value(v, key, 0.1, 100.0);
-  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, progress_hz)");
+  else if (key == "max_job_memory_mb") c.max_job_memory_mb = number_value(v, key, 16.0, 1048576.0);
+  else if (key == "max_queued_jobs") c.quota.max_queued_jobs = integer_value(v, key, 1, 1000000);
+  else if (key == "max_queued_hours") {
+    c.quota.max_queued_seconds = 3600.0 * number_value(v, key, 0.0, 1e6);
+    if (c.quota.max_queued_seconds <= 0.0) throw SpecError(key, "must be in (0, 1e6], got 0");
+  } else if (key == "progress_hz") c.progress_hz = number_value(v, key, 0.1, 100.0);
+  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, "
+                            "max_job_memory_mb, max_queued_jobs, max_queued_hours, progress_hz)");
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 // cycloptd's settings: defaults, then a JSON config file (--config), then command-line flags.
 //
 //   {"database": "cyclopt.db", "lcm_url": "udpm://239.255.76.67:7667?ttl=0", "workers": 2,
-//    "max_job_seconds": 3600, "max_job_iterations": 100000, "progress_hz": 5}
+//    "max_job_seconds": 3600, "max_job_iterations": 100000, "max_job_memory_mb": 4096,
+//    "max_queued_jobs": 100, "max_queued_hours": 168, "progress_hz": 5}
 
 #include "cyclopt/service/job_context.hpp"
+#include "cyclopt/storage/result_store.hpp"
 
 #include <string>
 #include <vector>
@@ -16,30 +18,41 @@ struct ServerConfig {
   std::string lcm_url;  // empty: LCM's default (LCM_DEFAULT_URL or udpm multicast)
   int workers = 0;      // 0: one per core
   service::JobLimits caps;  // per-job time and iteration limits (specs may only lower them)
+  double max_job_memory_mb = 4096.0;  // estimated peak memory per job (service/job_cost.hpp), MiB
+  storage::SenderQuota quota;         // queued jobs and their estimated seconds, per sender
   double progress_hz = 5.0;  // progress messages per second and job, at most
 };
 
 // Throws std::invalid_argument naming the key and the admissible range.
 ServerConfig server_config_from_file(const std::string& path, ServerConfig base = {});
 // Applies --database, --lcm-url, --workers, --max-job-seconds, --max-job-iterations,
-// --progress-hz (after --config FILE); throws std::invalid_argument on unknown or bad flags.
+// --max-job-memory-mb, --max-queued-jobs, --max-queued-hours, --progress-hz (after --config
+// FILE); throws std::invalid_argument on unknown or bad flags.
 ServerConfig server_config_from_args(const std::vector<std::string>& args);
 int effective_workers(const ServerConfig& c);
 
 inline constexpr const char* kServerUsage = R"(usage: cycloptd [--config FILE.json] [--database FILE] [--lcm-url URL] [--workers N]
-                [--max-job-seconds S] [--max-job-iterations N] [--progress-hz HZ]
+                [--max-job-seconds S] [--max-job-iterations N] [--max-job-memory-mb MB]
+                [--max-queued-jobs N] [--max-queued-hours H] [--progress-hz HZ]
 
 The cyclopt job server: queues jobs submitted over LCM, runs them on one worker per core, stores
 every solved point in SQLite (WAL) and publishes progress. SIGTERM / SIGINT stop it gracefully:
 running jobs are checkpointed (their stored points kept) and resume at the next start.
 
   --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
-                         max_job_iterations, progress_hz (flags given after it override it)
+                         max_job_iterations, max_job_memory_mb, max_queued_jobs,
+                         max_queued_hours, progress_hz (flags given after it override it)
   --database FILE        results database (default cyclopt.db; created if missing)
   --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)
-  --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600)
+  --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600); a job whose
+                         estimated time exceeds it is rejected at submission
   --max-job-iterations N per-job iteration cap, 1..1e9 (default 100000)
+  --max-job-memory-mb MB a job whose estimated peak memory exceeds it is rejected,
+                         [16, 1048576] (default 4096)
+  --max-queued-jobs N    queued jobs per sender (the authenticated key; all unauthenticated
+                         clients share one quota), 1..1e6 (default 100)
+  --max-queued-hours H   estimated hours of queued jobs per sender, (0, 1e6] (default 168)
   --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
 Exit codes: 0 clean shutdown, 1 bad usage or config, 2 database or LCM failure.
 )";

@@ -23,6 +23,11 @@ WorkerJobContext::WorkerJobContext(const storage::JobRecord& job, const service:
       points_stored_(job.points_stored),
       points_at_start_(job.points_stored) {}
 
+std::chrono::steady_clock::time_point WorkerJobContext::last_checkpoint() {
+  std::lock_guard lock(checkpoint_mutex_);
+  return last_checkpoint_;
+}
+
 double WorkerJobContext::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
@@ -37,14 +42,33 @@ void WorkerJobContext::add_curve(int curve_index, const std::string& name, const
 }
 
 bool WorkerJobContext::store_point(const storage::SolutionPoint& point) {
-  const bool added = store_.store_point(job_.id, point);
+  bool added = false;
+  try {
+    added = store_.store_point(job_.id, point);
+    checkpoint_time();
+  } catch (const storage::StorageError& e) {
+    store_error_ = e.what();
+    throw;
+  }
   if (added) ++points_stored_;
   return added;
+}
+
+void WorkerJobContext::checkpoint_time() {
+  std::lock_guard lock(checkpoint_mutex_);
+  last_checkpoint_ = std::chrono::steady_clock::now();
+  const double now = elapsed_seconds();
+  store_.add_run_seconds(job_.id, now - recorded_seconds_);
+  recorded_seconds_ = now;
 }
 
 std::set<storage::PointKey> WorkerJobContext::already_stored_points() { return store_.stored_points(job_.id); }
 
 service::StopReason WorkerJobContext::stop_reason() {
+  if (std::chrono::steady_clock::now() - last_checkpoint() > kCheckpointInterval) try {
+      checkpoint_time();
+    } catch (const storage::StorageError&) {  // a full disk: the time is recorded when the attempt ends
+    }
   if (cancel_.load()) return service::StopReason::cancelled;
   if (shutdown_.load()) return service::StopReason::shutdown;
   if (elapsed_seconds() + job_.run_seconds > limits_.max_wall_seconds) return service::StopReason::time_limit;
@@ -53,6 +77,7 @@ service::StopReason WorkerJobContext::stop_reason() {
 }
 
 void WorkerJobContext::report_progress(const service::ProgressReport& report) {
+  std::lock_guard lock(progress_mutex_);
   const auto now = std::chrono::steady_clock::now();
   if (now - last_publish_ < min_interval_) {
     pending_ = report;
@@ -62,6 +87,7 @@ void WorkerJobContext::report_progress(const service::ProgressReport& report) {
 }
 
 void WorkerJobContext::flush_progress() {
+  std::lock_guard lock(progress_mutex_);
   if (pending_) publish(*pending_);
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // The JobContext a worker hands to a job kind: commits points to the store, publishes progress
 // at most progress_hz times per second, and answers stop_reason() from the cancel flag, the
-// server's shutdown flag and the job's time and iteration limits.
+// server's shutdown flag and the job's time and iteration limits (time summed over attempts and
+// checkpointed to the store every few seconds, so a kill -9 loses at most that much).
+// report_progress, count_iterations and stop_reason may be called from several threads at once
+// (a multistart's solves); the rest from the job's worker thread.
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/storage/job_record.hpp"
@@ -10,7 +13,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <optional>
+#include <string>
 
 namespace cyclopt::server {
 
@@ -33,12 +38,22 @@ class WorkerJobContext final : public service::JobContext {
   // Publishes the last report if rate limiting held it back.
   void flush_progress();
   double elapsed_seconds() const;
+  // This attempt's seconds not yet added to the store's run_seconds.
+  double unrecorded_seconds() {
+    std::lock_guard lock(checkpoint_mutex_);
+    return elapsed_seconds() - recorded_seconds_;
+  }
+  // Why the last store_point failed ("" if none did): the job is then re-queued, not failed.
+  const std::string& store_error() const { return store_error_; }
   double publish_seconds() const { return publish_seconds_; }
   int points_stored() const { return points_stored_; }
   bool complete() const { return points_total_ >= 0 && points_stored_ >= points_total_; }
 
  private:
   void publish(const service::ProgressReport& report);
+  void checkpoint_time();
+  std::chrono::steady_clock::time_point last_checkpoint();
+  static constexpr std::chrono::seconds kCheckpointInterval{5};
 
   const storage::JobRecord& job_;
   service::JobLimits limits_;
@@ -49,8 +64,13 @@ class WorkerJobContext final : public service::JobContext {
   const std::atomic<bool>& shutdown_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point last_publish_{};
+  std::mutex progress_mutex_;  // last_publish_, pending_
   std::optional<service::ProgressReport> pending_;
-  long long iterations_ = 0;
+  std::atomic<long long> iterations_{0};
+  std::mutex checkpoint_mutex_;  // last_checkpoint_, recorded_seconds_
+  std::chrono::steady_clock::time_point last_checkpoint_ = start_;
+  double recorded_seconds_ = 0.0;  // of this attempt, in the store
+  std::string store_error_;
   int points_total_ = -1;
   int points_stored_ = 0;
   int points_at_start_ = 0;  // stored by earlier attempts

@@ -34,6 +34,11 @@ void WorkerPool::cancel(std::int64_t job_id) {
     early_cancels_.insert(job_id);  // claimed, but run_job has not registered it yet
 }
 
+bool WorkerPool::claims_paused() {
+  std::lock_guard lock(mutex_);
+  return std::chrono::steady_clock::now() < claims_paused_until_;
+}
+
 void WorkerPool::stop() {
   shutdown_ = true;
   wake_.notify_all();
@@ -43,7 +48,7 @@ void WorkerPool::work() {
   while (!shutdown_) {
     std::optional<storage::JobRecord> job;
     try {
-      job = store_.claim_next();
+      if (!claims_paused()) job = store_.claim_next();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "cycloptd: cannot claim a job: %s\n", e.what());
     }
@@ -77,8 +82,12 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
     error = "task '" + job.task + "' failed with a non-standard exception";
   }
   ctx.flush_progress();
-  const double run_seconds = ctx.elapsed_seconds();
   const service::StopReason stop = ctx.stop_reason();
+  {
+    std::lock_guard lock(mutex_);
+    cancel_flags_.erase(job.id);
+  }
+  if (!ctx.store_error().empty()) return requeue_after_store_failure(job, ctx);
   storage::JobState state = storage::JobState::done;
   if (!error.empty()) {
     state = storage::JobState::failed;
@@ -92,26 +101,49 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
                   : "limits.max_iterations: exceeded " + std::to_string(ctx.limits().max_iterations);
     }
   }
-  {
-    std::lock_guard lock(mutex_);
-    cancel_flags_.erase(job.id);
-  }
   try {
     if (stop == service::StopReason::shutdown && error.empty()) {
-      store_.return_to_queue(job.id, run_seconds, ctx.publish_seconds(), "server shutdown; resumes at next start");
+      store_.return_to_queue(job.id, ctx.unrecorded_seconds(), ctx.publish_seconds(), "server shutdown; resumes at next start");
       return;
     }
-    store_.finish(job.id, state, error, run_seconds, ctx.publish_seconds());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cycloptd: cannot record the end of job %lld: %s\n", static_cast<long long>(job.id), e.what());
+    store_.finish(job.id, state, error, ctx.unrecorded_seconds(), ctx.publish_seconds());
+  } catch (const storage::StorageError& e) {
+    // The row still says running: the next start re-queues it (recover_interrupted).
+    pause_claims();
+    publish_done(job, ctx, storage::JobState::queued,
+                 "could not record the end of the job (" + std::string(e.what()) +
+                     "); it stays in the database as interrupted and is re-queued when the server restarts");
     return;
   }
+  publish_done(job, ctx, state, error);
+}
+
+void WorkerPool::requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx) {
+  pause_claims();
+  std::string told = "could not store a point (" + ctx.store_error() + "); ";
+  try {
+    store_.return_to_queue(job.id, ctx.unrecorded_seconds(), ctx.publish_seconds(), "could not store: " + ctx.store_error());
+    told += "the job is re-queued and resumes from its stored points";
+  } catch (const storage::StorageError& e) {
+    told += "re-queueing failed too (" + std::string(e.what()) + "); it is re-queued when the server restarts";
+  }
+  std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job.id), told.c_str());
+  publish_done(job, ctx, storage::JobState::queued, told);
+}
+
+void WorkerPool::pause_claims() {
+  std::lock_guard lock(mutex_);
+  claims_paused_until_ = std::chrono::steady_clock::now() + kStoreFailurePause;
+}
+
+void WorkerPool::publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
+                              const std::string& error) {
   cyclopt_lcm::job_done_t done;
   done.job_id = job.id;
   done.request_id = job.request_id;
   done.state = std::string(storage::to_string(state));
   done.points_stored = ctx.points_stored();
-  done.run_seconds = run_seconds;
+  done.run_seconds = job.run_seconds + ctx.elapsed_seconds();
   done.publish_seconds = ctx.publish_seconds();
   done.error = error;
   publisher_.publish(channels::kDone, done);

@@ -1,14 +1,18 @@
 #pragma once
 // One thread per worker. Each claims the oldest queued job from the store, runs its kind with a
 // WorkerJobContext and records the outcome: done, failed (exception or limit), cancelled, or
-// back to queued when the server shuts down (its stored points are kept; it resumes later).
+// back to queued when the server shuts down or a point could not be stored (a full disk): its
+// stored points are kept and it resumes later; its watchers get a job_done_t with state
+// "queued" saying why. After a storage failure no job is claimed for kStoreFailurePause.
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
 #include "server_config.hpp"
+#include "worker_job_context.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <map>
 #include <memory>
@@ -32,6 +36,13 @@ class WorkerPool {
  private:
   void work();
   void run_job(const storage::JobRecord& job);
+  void requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx);
+  void publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
+                    const std::string& error);
+  void pause_claims();
+  bool claims_paused();
+
+  static constexpr std::chrono::seconds kStoreFailurePause{5};
 
   const ServerConfig& config_;
   const service::JobKindRegistry& kinds_;
@@ -42,6 +53,7 @@ class WorkerPool {
   std::condition_variable wake_;
   std::map<std::int64_t, std::shared_ptr<std::atomic<bool>>> cancel_flags_;  // running jobs
   std::set<std::int64_t> early_cancels_;  // cancelled after being claimed, before their flag existed
+  std::chrono::steady_clock::time_point claims_paused_until_{};
   std::vector<std::thread> threads_;
 };
 

@@ -44,6 +44,43 @@ TEST(ValueRange, RejectsBadGrids) {
     EXPECT_EQ(failing_field([&] { parse_value_range(bad, "speeds", 0.0, 5.0); }), "speeds") << bad.dump();
 }
 
+// The message of the SpecError `f` throws ("" if it does not throw).
+template <class F>
+std::string failing_message(F&& f) {
+  try {
+    f();
+  } catch (const SpecError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ValueRange, TheLastPointMayRoundAboveHi) {
+  // 0.1 + 9999 * 0.1 = 1000.0000000000001: still the grid's end, stored as exactly 1000.
+  const auto v = parse_value_range("0.1:0.1:1000", "continuation.values", -1e3, 1e3);
+  ASSERT_EQ(v.size(), 10000u);
+  EXPECT_EQ(v.back(), 1000.0);
+  EXPECT_EQ(parse_value_range("0.6:0.1:1.4", "speeds", 0.1, 3.0).size(), 9u);
+  EXPECT_EQ(parse_value_range("0:0.3:1", "speeds", 0.0, 3.0).size(), 4u);  // 1 is not on the grid
+}
+
+TEST(ValueRange, HugeGridsReportTheirSizeWithoutOverflow) {
+  const std::string m = failing_message([] { parse_value_range("-1e308:1e-300:1e308", "speeds", -1e308, 1e308); });
+  EXPECT_NE(m.find("more than 1e308 points"), std::string::npos) << m;
+  const std::string m2 = failing_message([] { parse_value_range("0:1e-6:1", "speeds", 0.0, 5.0); });
+  EXPECT_NE(m2.find("has 1e+06 points; at most 10000"), std::string::npos) << m2;
+}
+
+TEST(JobSpec, NumbersBeyondDoubleNameTheirField) {
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(R"({"scene": "walker", "speed": 1e400})"); }), "speed");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(R"({"start": [0.1, [2], -1e999]})"); }), "start[2]");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text(R"({"limits": {"max_wall_seconds": 1e400}, "a": 1})"); }),
+            "limits.max_wall_seconds");
+  EXPECT_EQ(failing_field([] { parse_job_spec_text("1e400"); }), "spec_json");
+  const std::string m = failing_message([] { parse_job_spec_text(R"({"speed": 1e400})"); });
+  EXPECT_NE(m.find("1e400 is outside the range of a double"), std::string::npos) << m;
+}
+
 TEST(JobSpec, AcceptsAFootSweep) {
   const JobKindRegistry kinds = builtin_job_kinds();
   const ValidatedJobSpec v = validate_job_spec(sweep_spec(), kinds);

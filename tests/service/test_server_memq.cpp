@@ -162,5 +162,110 @@ TEST_F(ServerMemq, ShutdownMidSweepResumesWithoutDuplicates) {
   EXPECT_EQ(j->attempts, 2);
 }
 
+TEST_F(ServerMemq, CostlyJobsAreRejectedAtSubmissionWithTheEstimate) {
+  const nlohmann::json huge = {{"scene", "walker"},     {"task", "multistart"}, {"foot", "point"},
+                               {"speed", 1.3},          {"points", 20000},
+                               {"multistart", {{"starts", 1000}}}};
+  nlohmann::json big = huge;
+  big["multistart"]["starts"] = 2;
+  big["points"] = 5000;
+  {
+    server::Server srv(config_, kinds_, lcm_);
+    const auto ack = submit("huge", huge.dump());
+    EXPECT_FALSE(ack.accepted);
+    EXPECT_EQ(ack.field, "points") << ack.problem;
+    EXPECT_NE(ack.problem.find("estimated to run"), std::string::npos) << ack.problem;
+    EXPECT_NE(ack.problem.find("limit of 60 min"), std::string::npos) << ack.problem;
+    std::printf("rejected: %s\n", ack.problem.c_str());
+    EXPECT_EQ(srv.store().count_jobs(std::nullopt), 0);
+  }
+  config_.max_job_memory_mb = 64;  // a server with little memory per job
+  server::Server small(config_, kinds_, lcm_);
+  const auto mem = submit("memory", big.dump());
+  EXPECT_FALSE(mem.accepted);
+  EXPECT_NE(mem.problem.find("of memory"), std::string::npos) << mem.problem;
+  EXPECT_EQ(small.store().count_jobs(std::nullopt), 0);
+}
+
+TEST_F(ServerMemq, OddInputsGetFieldErrors) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto overflow = submit("overflow", R"({"scene": "walker", "task": "optimise", "foot": "point", "speed": 1e400})");
+  EXPECT_FALSE(overflow.accepted);
+  EXPECT_EQ(overflow.field, "speed") << overflow.problem;
+  const auto grid = submit("grid", R"({"scene": "walker", "task": "sweep", "foot": "point", "speeds": "-1e308:1e-300:1e308"})");
+  EXPECT_EQ(grid.field, "speeds");
+  EXPECT_EQ(grid.problem.find("-9223372036854775808"), std::string::npos) << grid.problem;
+}
+
+TEST_F(ServerMemq, QueueQuotaStopsOneSenderFromFloodingTheQueue) {
+  config_.quota.max_queued_jobs = 5;
+  config_.workers = 1;
+  server::Server srv(config_, kinds_, lcm_);
+  int accepted = 0, over_quota = 0;
+  for (int i = 0; i < 20; ++i) {
+    const auto ack = submit("flood" + std::to_string(i), sweep(100, 20));
+    if (ack.accepted) ++accepted;
+    if (!ack.accepted && ack.field == "queue") ++over_quota;
+  }
+  EXPECT_LE(accepted, 6);  // 5 queued + at most one already running
+  EXPECT_EQ(accepted + over_quota, 20);
+}
+
+TEST_F(ServerMemq, FullDiskRequeuesTheJobTellsItsWatchersAndKeepsItsPoints) {
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("disk", sweep(400, 5));
+  while (srv.store().job(ack.job_id)->points_stored < 5) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  auto set_max_pages = [&](const std::string& n) {
+    std::lock_guard lock(srv.store().mutex());
+    srv.store().connection().exec("PRAGMA max_page_count = " + n);
+  };
+  {
+    std::lock_guard lock(srv.store().mutex());
+    storage::Statement q(srv.store().connection(), "PRAGMA page_count");
+    q.step();
+    srv.store().connection().exec("PRAGMA max_page_count = " + std::to_string(q.int64(0)));
+  }
+  const auto told = client_.watch(ack.job_id, [](const auto&) {}, 30.0);
+  ASSERT_TRUE(told);
+  EXPECT_EQ(told->state, "queued");
+  EXPECT_NE(told->error.find("could not store a point"), std::string::npos) << told->error;
+  EXPECT_NE(told->error.find("re-queued"), std::string::npos) << told->error;
+  const auto j = srv.store().job(ack.job_id);
+  EXPECT_TRUE(j->state == storage::JobState::queued || j->state == storage::JobState::running);
+  EXPECT_GE(j->points_stored, 5);
+  set_max_pages("1073741823");  // space again: the job resumes and finishes after the pause
+  const auto done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "done") << done->error;
+  EXPECT_EQ(srv.store().job(ack.job_id)->points_stored, 400);
+}
+
+// Cancel and the wall-time limit inside long solver work (a walker sweep's multistart): both
+// take effect within 1 s (2 s allowed here: the machine running the tests may be loaded).
+TEST_F(ServerMemq, CancelAndWallLimitStopARunningSweepWithinASecond) {
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "0.6:0.1:1.4"},
+                               {"multistart", {{"starts", 6}}}};
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("cancel-sweep", spec.dump());
+  ASSERT_TRUE(ack.accepted) << ack.problem;
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // inside the multistart at 0.6 m/s
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_TRUE(client_.cancel(ack.job_id, 5.0));
+  const auto done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
+  const double latency = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "cancelled");
+  EXPECT_LT(latency, 2.0);
+  nlohmann::json limited = spec;
+  limited["limits"] = {{"max_wall_seconds", 2.0}};
+  const auto lim = submit("limited-sweep", limited.dump());
+  const auto failed = client_.watch(lim.job_id, [](const auto&) {}, 60.0);
+  ASSERT_TRUE(failed);
+  EXPECT_EQ(failed->state, "failed");
+  EXPECT_LT(failed->run_seconds - 2.0, 2.0);
+  std::printf("cancel latency %.3f s; wall limit 2 s: stopped after %.3f s (overshoot %.3f s)\n", latency,
+              failed->run_seconds, failed->run_seconds - 2.0);
+}
+
 }  // namespace
 }  // namespace cyclopt

@@ -102,7 +102,8 @@ ContinuationResult Run::run(const VectorXd& x0) {
   nlp::SolverSummary solve_k = first.corrector;  // at x_k
   const bool first_ok = first.converged;
   if (!emit(std::move(first)) || !first_ok) {
-    result_.message = first_ok ? "stopped" : "no KKT point at the first parameter value";
+    const bool stopped = first_ok || result_.points.back().corrector.termination == nlp::Termination::user_stop;
+    result_.message = stopped ? "stopped" : "no KKT point at the first parameter value";
     result_.next_curve_id = next_curve_;
     result_.seconds = seconds_since(start);
     return std::move(result_);
@@ -121,7 +122,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
     std::optional<MatrixXd> W;
     double p_new = 0.0, step = 0.0, next_trust = trust_;  // step = |Delta p| exactly (p_new - p may round)
     if (o_.predictor == Predictor::qp) {
-      for (;;) {  // steps 2-18
+      for (;;) {  // steps 2-18 (on a stop request the corrector below refuses to evaluate: user_stop)
         ++point.predictor_attempts;
         step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
         p_new = step == remaining ? target : p + direction * step;
@@ -137,6 +138,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
         }
         const double factor = pr.outcome == PredictorOutcome::no_step ? o_.tau * o_.tau : o_.tau;
         trust_ = std::max(o_.min_trust_region, factor * trust_);
+        if (o_.corrector.should_stop && o_.corrector.should_stop()) break;
       }
     } else {
       step = std::min(trivial_step > 0.0 ? trivial_step : o_.fixed_step > 0.0 ? o_.fixed_step : remaining, remaining);

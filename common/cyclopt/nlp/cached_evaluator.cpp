@@ -6,10 +6,17 @@
 
 namespace cyclopt::nlp {
 
-CachedEvaluator::CachedEvaluator(Problem& problem, SolverSummary& counts) : problem_(problem), counts_(counts) {}
+CachedEvaluator::CachedEvaluator(Problem& problem, SolverSummary& counts, std::function<bool()> should_stop)
+    : problem_(problem), counts_(counts), should_stop_(std::move(should_stop)) {}
 
 const EvaluationStatus& CachedEvaluator::evaluate(const Eigen::VectorXd& x, bool with_derivatives) {
   if (valid_ && x.size() == x_.size() && x == x_ && (has_derivatives_ || !with_derivatives || !status_.ok)) return status_;
+  if (stopped_ || (should_stop_ && should_stop_())) {
+    stopped_ = true;
+    valid_ = false;
+    status_ = EvaluationStatus::failure("stopped (should_stop)");
+    return status_;
+  }
   x_ = x;
   valid_ = true;
   has_derivatives_ = with_derivatives;

@@ -56,7 +56,7 @@ class ProblemTnlp : public Ipopt::TNLP {
         options_(options),
         x0_(x0),
         summary_(summary),
-        evaluator_(problem, summary),
+        evaluator_(problem, summary, options.should_stop),
         n_(problem.num_variables()),
         m_eq_(problem.num_equalities()),
         m_in_(problem.num_inequalities()),
@@ -345,6 +345,10 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
   } else if (summary.termination == Termination::numerical_failure || summary.iterations == 0) {
     summary.termination = Termination::evaluation_failure;
     summary.message += ": evaluation failed at the final point";
+  }
+  if (evaluator.stopped()) {
+    summary.termination = Termination::user_stop;
+    summary.message += " (stopped by should_stop)";
   }
   return summary;
 }

@@ -34,8 +34,10 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
                             const MultistartOptions& options) {
   validate(options);
   const auto start_time = std::chrono::steady_clock::now();
+  const auto stopped = [&] { return options.solver.should_stop && options.solver.should_stop(); };
   std::vector<Eigen::VectorXd> starts(static_cast<size_t>(options.num_starts));
   for (int i = 0; i < options.num_starts; ++i) {
+    if (stopped()) break;  // the unsampled starts stay empty and unsolved (user_stop)
     std::mt19937_64 rng(options.base_seed + static_cast<std::uint64_t>(i));
     starts[static_cast<size_t>(i)] = sample_start(rng);
   }
@@ -55,6 +57,7 @@ MultistartResult multistart(const ProblemFactory& make_problem, std::vector<Eige
   MultistartResult result;
   result.starts = std::move(starts);
   result.runs.resize(static_cast<size_t>(n));
+  const auto stopped = [&] { return options.solver.should_stop && options.solver.should_stop(); };
 
   const int threads = std::min(n, options.num_threads > 0 ? options.num_threads
                                                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
@@ -64,8 +67,15 @@ MultistartResult multistart(const ProblemFactory& make_problem, std::vector<Eige
   auto worker = [&] {
     try {
       const std::unique_ptr<Problem> problem = make_problem();
-      for (int i = next++; i < n; i = next++)
-        result.runs[static_cast<size_t>(i)] = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+      for (int i = next++; i < n; i = next++) {
+        SolverSummary& run = result.runs[static_cast<size_t>(i)];
+        if (stopped()) {  // a start not begun: nothing to solve
+          run.termination = Termination::user_stop;
+          run.message = "not started: stopped by should_stop";
+          continue;
+        }
+        run = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+      }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(failure_mutex);
       if (!failure) failure = std::current_exception();

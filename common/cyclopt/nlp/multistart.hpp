@@ -4,7 +4,9 @@
 // Start i draws its x0 from a std::mt19937_64 seeded with base_seed + i, so the starts - and,
 // since every solve is deterministic, the results and their ranking - do not depend on the
 // number of threads. Each thread builds its own Problem from the factory (problems hold
-// workspace and are not shared between threads).
+// workspace and are not shared between threads). Once solver.should_stop says stop, no further
+// start is sampled or begun (those runs end as user_stop) and the running solves stop within one
+// evaluation.
 
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/nlp/solver_options.hpp"

@@ -38,6 +38,10 @@ struct SolverOptions {
   int print_level = 0;  // 0 = silent
   // Called after every iteration; returning false stops the solver (termination = user_stop).
   std::function<bool(const IterationReport&)> on_iteration;
+  // Polled before every problem evaluation (and by multistart before every start, by
+  // continuation before every predictor): returning true ends the solve with user_stop within
+  // one evaluation. Must be cheap and thread-safe (multistart calls it from its threads).
+  std::function<bool()> should_stop;
   IpoptOptions ipopt;  // used when solver == ipopt
   SqpOptions sqp;      // used when solver == sqp
 };

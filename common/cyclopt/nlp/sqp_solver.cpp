@@ -52,7 +52,7 @@ class SqpRun {
       : options_(options),
         sqp_(options.sqp),
         summary_(summary),
-        evaluator_(problem, summary),
+        evaluator_(problem, summary, options.should_stop),
         n_(problem.num_variables()),
         m_eq_(problem.num_equalities()),
         m_in_(problem.num_inequalities()),
@@ -71,8 +71,9 @@ class SqpRun {
   VectorXd project(const VectorXd& x) const { return x.cwiseMax(lower_).cwiseMin(upper_); }
   LinearisationPoint here() const { return {current_, x_, lower_, upper_}; }
   void stop(Termination t, std::string message) {
-    summary_.termination = t;
-    summary_.message = std::move(message);
+    const bool stopped = evaluator_.stopped();  // the failure that ended the run was a refused evaluation
+    summary_.termination = stopped ? Termination::user_stop : t;
+    summary_.message = stopped ? "stopped by should_stop (" + message + ")" : std::move(message);
   }
   bool is_kkt_point();
   std::optional<SearchDirection> search_direction();
@@ -283,6 +284,10 @@ void SqpRun::run(const VectorXd& x0) {
     }
     if (elapsed() > options_.max_wall_seconds) {
       stop(Termination::time_limit, "MaxTime reached");
+      break;
+    }
+    if (options_.should_stop && options_.should_stop()) {
+      stop(Termination::user_stop, "stopped by should_stop");
       break;
     }
     if (summary_.function_evaluations + summary_.jacobian_evaluations > sqp_.max_function_evaluations) {

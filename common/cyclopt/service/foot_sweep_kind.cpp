@@ -114,7 +114,8 @@ void run(const nlohmann::json& spec, JobContext& ctx) {
 
 JobKind foot_sweep_kind() {
   return {"foot_sweep", {"walker"}, {"foot", "sweep", "samples", "point_delay_ms"},
-          [](const nlohmann::json& spec) { parse(spec); }, run};
+          [](const nlohmann::json& spec) { parse(spec); }, run,
+          {}};  // no estimate: at most 10000 cheap grid points
 }
 
 }  // namespace cyclopt::service

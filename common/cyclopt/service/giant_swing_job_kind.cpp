@@ -3,6 +3,7 @@
 #include "cyclopt/giant_swing/one_step_map.hpp"
 #include "cyclopt/giant_swing/seed_optimiser.hpp"
 #include "cyclopt/service/giant_swing_job_spec.hpp"
+#include "cyclopt/service/solver_progress.hpp"
 
 #include <stdexcept>
 
@@ -39,16 +40,9 @@ storage::SolutionPoint seed_point(const Model& model, const GiantSwingJob& job, 
 
 storage::SolutionPoint bezier_point(const Model& model, const GiantSwingJob& job, JobContext& ctx) {
   MinimumJerkSettings settings = job.bezier;
-  settings.solver.on_iteration = [&ctx, &job](const nlp::IterationReport& r) {
-    ctx.count_iterations(1);
-    ctx.report_progress({.iteration = r.iteration,
-                         .objective = r.objective,
-                         .constraint_violation = r.constraint_violation,
-                         .curve_id = 0,
-                         .points_total = 1,
-                         .message = "bezier minimum jerk, " + job.motion});
-    return ctx.stop_reason() == StopReason::none;
-  };
+  settings.solver.on_iteration =
+      solver_progress(ctx, {.curve_id = 0, .points_total = 1, .message = "bezier minimum jerk, " + job.motion});
+  settings.solver.should_stop = stop_predicate(ctx);
   // periodic: the closed swing from and to omega, repeated (its start rate is omega).
   const MinimumJerkResult r = solve_minimum_jerk(model, job.task, settings);
   if (r.coefficients.size() == 0) throw std::runtime_error("giant swing (bezier): " + r.message);
@@ -108,7 +102,8 @@ void run_giant_swing(const nlohmann::json& spec, JobContext& ctx) {
 
 JobKind giant_swing_kind() {
   return {"giant_swing", {"giant_swing"}, giant_swing_job_fields(),
-          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing};
+          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing,
+          {}};  // no estimate: the seed's tasks take about a minute whatever the options
 }
 
 }  // namespace cyclopt::service

@@ -36,6 +36,9 @@
 //
 // and one line in builtin_job_kinds.cpp: registry.add(walker_sweep_kind());
 //
+// Contract for estimate(): it is given a spec that passed validate(); kinds whose cost grows with
+// their spec (grid size, starts, speeds) provide it.
+//
 // Contract for run(): it is given a spec that passed validate(); it returns normally when all
 // points are stored or when stop_reason() became non-none (the server then decides the job's
 // state); it throws (any std::exception) only when the job failed — the message is stored.
@@ -43,6 +46,7 @@
 // between calls: everything a resumed job needs is in the store.
 
 #include "cyclopt/service/job_context.hpp"
+#include "cyclopt/service/job_cost.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -59,6 +63,9 @@ struct JobKind {
   std::vector<std::string> fields;        // top-level spec keys the kind reads (besides the common ones)
   std::function<void(const nlohmann::json& spec)> validate;        // throws SpecError
   std::function<void(const nlohmann::json& spec, JobContext& ctx)> run;
+  // Expected time and memory of a valid spec, checked against the server's limits before the job
+  // is queued (job_cost.hpp); empty: the kind's jobs are cheap (seconds, little memory).
+  std::function<JobCost(const nlohmann::json& spec)> estimate;
 };
 
 class JobKindRegistry {

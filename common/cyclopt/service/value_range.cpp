@@ -2,12 +2,15 @@
 
 #include "cyclopt/service/spec_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace cyclopt::service {
 
 namespace {
+
+constexpr double kOnGrid = 1e-9;
 
 double parse_number(const std::string& text, const std::string& path, const std::string& syntax) {
   std::size_t used = 0;
@@ -33,12 +36,22 @@ std::vector<double> parse_colon_range(const std::string& s, const std::string& p
   const double hi = parse_number(parts[2], path, syntax);
   if (hi < lo) throw SpecError(path, "'" + s + "': hi must be >= lo");
   if (!(step > 0.0)) throw SpecError(path, "'" + s + "': step must be > 0");
-  const double n = std::floor((hi - lo) / step + 1e-9) + 1.0;
-  if (n > kMaxGridPoints)
-    throw SpecError(path, "'" + s + "' has " + std::to_string(static_cast<long long>(n)) + " points; at most " +
-                              std::to_string(kMaxGridPoints) + " are allowed");
+  // hi is on the grid when it lies within a relative kOnGrid of a step from a grid point; the
+  // point count is computed in double, so it is finite or "more than" (never an overflowed cast).
+  const double steps = (hi - lo) / step;
+  if (!std::isfinite(steps) || steps + 1.0 > kMaxGridPoints) {
+    std::ostringstream os;
+    os << "'" << s << "' has ";
+    if (std::isfinite(steps))
+      os << std::floor(steps * (1.0 + kOnGrid) + kOnGrid) + 1.0;
+    else
+      os << "more than 1e308";
+    os << " points; at most " << kMaxGridPoints << " are allowed";
+    throw SpecError(path, os.str());
+  }
+  const int n = static_cast<int>(std::floor(steps * (1.0 + kOnGrid) + kOnGrid)) + 1;
   std::vector<double> out;
-  for (int i = 0; i < static_cast<int>(n); ++i) out.push_back(lo + step * i);
+  for (int i = 0; i < n; ++i) out.push_back(std::min(lo + step * i, hi));  // the last point may round above hi
   return out;
 }
 

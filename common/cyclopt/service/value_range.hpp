@@ -1,6 +1,7 @@
 #pragma once
-// Parameter grids as users write them: "lo:step:hi" (hi included when it lies on the grid,
-// within 1e-9 of a step), a single number, or a JSON array of numbers. Used for "speeds" and
+// Parameter grids as users write them: "lo:step:hi" (hi included when it lies on the grid
+// within a relative 1e-9 of the step count, and then exactly hi), a single number, or a JSON
+// array of numbers. Used for "speeds" and
 // for the foot_sweep "values".
 
 #include <nlohmann/json_fwd.hpp>

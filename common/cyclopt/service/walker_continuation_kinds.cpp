@@ -1,12 +1,14 @@
 #include "cyclopt/service/walker_continuation_kinds.hpp"
 
 #include "cyclopt/continuation/continuation_solver.hpp"
-#include "cyclopt/continuation/speed_sweep.hpp"
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
 
 #include <algorithm>
@@ -101,25 +103,15 @@ class CurveStore {
   std::map<int, int> counts_;
 };
 
-// Corrector options that count iterations, report progress and honour stop requests.
-nlp::SolverOptions reporting(nlp::SolverOptions o, JobContext& ctx, const std::string& what) {
-  o.on_iteration = [&ctx, what](const nlp::IterationReport& r) {
-    ctx.count_iterations(1);
-    ctx.report_progress({.iteration = r.iteration, .objective = r.objective, .constraint_violation = r.constraint_violation,
-                         .points_total = -1, .message = what});
-    return ctx.stop_reason() == StopReason::none;
-  };
-  return o;
-}
-
 void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
   ContinuationJob job = parse_continuation_job(spec);
   const walker::WalkerModel<double> model = job.walker.model();
   walker::GaitProblemOptions po = job.walker.problem;
   po.speed = job.walker.speeds.front();
   ctx.announce(static_cast<int>(job.values.size()));
-  job.options.corrector = reporting(job.options.corrector, ctx, "continuation over " + job.parameter);
-  const continuation::ParametricProblem family = continuation::walker_family(model, po, job.parameter);
+  job.options.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "continuation over " + job.parameter});
+  job.options.corrector.should_stop = stop_predicate(ctx);
+  const continuation::ParametricProblem family = studies::walker_family(model, po, job.parameter);
   walker::GaitProblemOptions first = po;
   if (job.parameter == "speed") first.speed = job.values.front();
   Eigen::VectorXd x0;
@@ -142,27 +134,28 @@ void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
 void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
   ContinuationJob job = parse_continuation_job(spec);
   const walker::WalkerModel<double> model = job.walker.model();
-  continuation::SpeedSweepOptions so;
+  studies::SpeedSweepOptions so;
   so.speeds = job.values;
   so.seed_speeds = job.seed_speeds;
   so.starts = job.walker.starts;
   so.seed = job.walker.seed;
   so.scale = job.walker.scale;
   so.continuation = job.options;
-  so.continuation.corrector = reporting(job.options.corrector, ctx, "speed sweep");
-  const continuation::ParametricProblem family = continuation::walker_family(model, job.walker.problem, "speed");
+  so.continuation.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "speed sweep"});
+  so.continuation.corrector.should_stop = stop_predicate(ctx);
+  const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
   CurveStore store(ctx, family, 1);
-  const continuation::SpeedSweepResult r =
-      continuation::speed_sweep(model, job.walker.problem, so, [&](const CurvePoint& c) { return store(c); });
+  const studies::SpeedSweepResult r =
+      studies::speed_sweep(model, job.walker.problem, so, [&](const CurvePoint& c) { return store(c); });
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.add_curve(0, "best solution per speed", "speed");
   for (std::size_t i = 0; i < r.best.size(); ++i) {
-    const continuation::BestPoint& b = r.best[i];
+    const studies::BestPoint& b = r.best[i];
     storage::SolutionPoint p;
     if (b.found) {
       p = store.point(b.point, {0, static_cast<int>(i)});
-      p.values["found_by"] = continuation::describe(b);  // which sweep step found the point
+      p.values["found_by"] = studies::describe(b);  // which sweep step found the point
     } else {
       p.key = {0, static_cast<int>(i)};
       p.parameter = b.speed;
@@ -178,7 +171,11 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
 JobKind continuation_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
   std::vector<std::string> fields = walker_job_fields(true);
   fields.push_back("continuation");
-  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run};
+  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run,
+          [task](const nlohmann::json& spec) {
+            const ContinuationJob j = parse_continuation_job(spec);
+            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()), static_cast<int>(j.seed_speeds.size()));
+          }};
 }
 
 }  // namespace

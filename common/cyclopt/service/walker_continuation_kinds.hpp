@@ -4,7 +4,7 @@
 //   continuation  one solution curve over "speeds" (p_0 first, then the requested values; the
 //                 mean speed) or, with "continuation": {"parameter": "l_HM", "values": "0.20:0.01:0.25"},
 //                 over a model parameter at the first of "speeds" (seed 001, Algorithm 2)
-//   sweep         the chapter-9 workflow (continuation/speed_sweep.hpp) over "speeds": multistart
+//   sweep         the chapter-9 workflow (studies/speed_sweep.hpp) over "speeds": multistart
 //                 ("multistart": starts, seed, scale) at the seed speeds, continuation of the best
 //                 optima both ways and of every curve jumped to, best point per speed
 //

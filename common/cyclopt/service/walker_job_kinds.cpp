@@ -1,6 +1,8 @@
 #include "cyclopt/service/walker_job_kinds.hpp"
 
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
@@ -16,24 +18,6 @@ using walker::GaitOptimum;
 walker::GaitProblemOptions problem_at(const WalkerJob& job, double speed) {
   walker::GaitProblemOptions o = job.problem;
   o.speed = speed;
-  return o;
-}
-
-// Solver options whose iteration callback reports progress and honours stop requests.
-nlp::SolverOptions reporting(const WalkerJob& job, JobContext& ctx, double speed, int done, int total) {
-  nlp::SolverOptions o = job.solver;
-  o.on_iteration = [&ctx, speed, done, total](const nlp::IterationReport& r) {
-    ctx.count_iterations(1);
-    ctx.report_progress({.iteration = r.iteration,
-                         .objective = r.objective,
-                         .constraint_violation = r.constraint_violation,
-                         .parameter = speed,
-                         .curve_id = 0,
-                         .points_done = done,
-                         .points_total = total,
-                         .message = "v = " + std::to_string(speed) + " m/s"});
-    return ctx.stop_reason() == StopReason::none;
-  };
   return o;
 }
 
@@ -63,7 +47,11 @@ void run_optimise(const nlohmann::json& spec, JobContext& ctx) {
   ctx.add_curve(0, "optimal gait", "speed");
   if (ctx.already_stored_points().count({0, 0})) return;
   const double v = job.speeds[0];
-  const GaitOptimum opt = walker::optimise_gait(job.model(), problem_at(job, v), reporting(job, ctx, v, 0, 1), job.start);
+  nlp::SolverOptions solver = job.solver;
+  solver.on_iteration = solver_progress(
+      ctx, {.parameter = v, .curve_id = 0, .points_done = 0, .points_total = 1, .message = "v = " + std::to_string(v) + " m/s"});
+  solver.should_stop = stop_predicate(ctx);
+  const GaitOptimum opt = walker::optimise_gait(job.model(), problem_at(job, v), solver, job.start);
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.store_point(point_of(opt, {0, 0}, v));
 }
@@ -83,7 +71,8 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   mo.num_starts = job.starts;
   mo.base_seed = job.seed;
   mo.solver = job.solver;
-  mo.solver.on_iteration = [&ctx](const nlp::IterationReport&) { return ctx.stop_reason() == StopReason::none; };
+  mo.solver.on_iteration = stop_requests(ctx);
+  mo.solver.should_stop = stop_predicate(ctx);
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
                        .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
   const nlp::MultistartResult r = nlp::multistart(
@@ -112,7 +101,8 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
 }
 
 JobKind walker_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
-  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run};
+  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run,
+          [task](const nlohmann::json& spec) { return walker_job_cost(parse_walker_job(spec, false), task, 1, 0); }};
 }
 
 }  // namespace

@@ -9,6 +9,48 @@ namespace {
 
 nlohmann::json nullable(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// A text cell as valid UTF-8: a damaged or foreign byte sequence becomes U+FFFD, so one bad cell
+// cannot make a whole page unprintable (nlohmann::json refuses to dump invalid UTF-8).
+std::string utf8(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char c = byte(i);
+    // Sequence length and the admissible range of its second byte (RFC 3629, table 3-7).
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xBF;
+    if (c < 0x80) n = 1;
+    else if (c >= 0xC2 && c <= 0xDF) n = 2;
+    else if (c == 0xE0) n = 3, lo = 0xA0;
+    else if (c >= 0xE1 && c <= 0xEC) n = 3;
+    else if (c == 0xED) n = 3, hi = 0x9F;
+    else if (c >= 0xEE && c <= 0xEF) n = 3;
+    else if (c == 0xF0) n = 4, lo = 0x90;
+    else if (c >= 0xF1 && c <= 0xF3) n = 4;
+    else if (c == 0xF4) n = 4, hi = 0x8F;
+    bool ok = n > 0 && i + n <= text.size();
+    for (std::size_t k = 1; ok && k < n; ++k)
+      ok = k == 1 ? byte(i + 1) >= lo && byte(i + 1) <= hi : byte(i + k) >= 0x80 && byte(i + k) <= 0xBF;
+    if (ok) {
+      out.append(text, i, n);
+      i += n;
+    } else {
+      out += "\xEF\xBF\xBD";
+      ++i;
+    }
+  }
+  return out;
+}
+
+// A stored JSON document, or a note that the cell is unreadable.
+nlohmann::json json_cell(const std::string& text, const char* column) {
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded())
+    return {{"unreadable", std::string(column) + " is not valid JSON (" + std::to_string(text.size()) + " bytes)"}};
+  return j;
+}
+
 // Rows of `what` (solutions, events, curves, trajectories) belonging to a job.
 int count(ResultStore& store, const std::string& what, std::int64_t job_id) {
   std::lock_guard lock(store.mutex());
@@ -44,8 +86,8 @@ nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset
                                             {"objective", nullable(q.real(3))},
                                             {"constraint_violation", nullable(q.real(4))},
                                             {"iterations", q.int64(5)},
-                                            {"status", q.text(6)},
-                                            {"values", nlohmann::json::parse(q.text(7))},
+                                            {"status", utf8(q.text(6))},
+                                            {"values", json_cell(q.text(7), "values_json")},
                                             {"solved_at", q.real(8)}};
                     });
 }
@@ -58,16 +100,16 @@ nlohmann::json trajectory_rows(ResultStore& store, std::int64_t job_id, int offs
                     job_id, offset, limit, [](const Statement& q) {
                       return nlohmann::json{{"curve", q.int64(0)},
                                             {"point", q.int64(1)},
-                                            {"format", q.text(2)},
-                                            {"data", q.text(2) == "json" ? nlohmann::json::parse(q.text(3))
-                                                                         : nlohmann::json(q.text(3))}};
+                                            {"format", utf8(q.text(2))},
+                                            {"data", q.text(2) == "json" ? json_cell(q.text(3), "data")
+                                                                         : nlohmann::json(utf8(q.text(3)))}};
                     });
 }
 
 nlohmann::json event_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
   return paged_rows(store, "SELECT at, kind, message FROM events WHERE job_id = ? ORDER BY id LIMIT ? OFFSET ?", job_id,
                     offset, limit, [](const Statement& q) {
-                      return nlohmann::json{{"at", q.real(0)}, {"kind", q.text(1)}, {"message", q.text(2)}};
+                      return nlohmann::json{{"at", q.real(0)}, {"kind", utf8(q.text(1))}, {"message", utf8(q.text(2))}};
                     });
 }
 
@@ -78,7 +120,7 @@ nlohmann::json curve_rows(ResultStore& store, std::int64_t job_id, int offset, i
                     "FROM curves c WHERE c.job_id = ? ORDER BY c.curve_index LIMIT ? OFFSET ?",
                     job_id, offset, limit, [](const Statement& q) {
                       return nlohmann::json{
-                          {"curve", q.int64(0)}, {"name", q.text(1)}, {"parameter_name", q.text(2)}, {"points", q.int64(3)}};
+                          {"curve", q.int64(0)}, {"name", utf8(q.text(1))}, {"parameter_name", utf8(q.text(2))}, {"points", q.int64(3)}};
                     });
 }
 
@@ -93,9 +135,9 @@ JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
 nlohmann::json to_json(const JobRecord& job, bool with_spec) {
   auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
   nlohmann::json j = {{"id", job.id},
-                      {"request_id", job.request_id},
-                      {"scene", job.scene},
-                      {"task", job.task},
+                      {"request_id", utf8(job.request_id)},
+                      {"scene", utf8(job.scene)},
+                      {"task", utf8(job.task)},
                       {"state", to_string(job.state)},
                       {"cancel_requested", job.cancel_requested},
                       {"attempts", job.attempts},
@@ -106,8 +148,8 @@ nlohmann::json to_json(const JobRecord& job, bool with_spec) {
                       {"points_stored", job.points_stored},
                       {"run_seconds", job.run_seconds},
                       {"publish_seconds", job.publish_seconds},
-                      {"error", job.error}};
-  if (with_spec) j["spec"] = nlohmann::json::parse(job.spec_json, nullptr, false);
+                      {"error", utf8(job.error)}};
+  if (with_spec) j["spec"] = json_cell(job.spec_json, "spec_json");
   return j;
 }
 

@@ -3,6 +3,10 @@
 #include "cyclopt/storage/results_schema.hpp"
 
 #include <chrono>
+#include <filesystem>
+#include <limits>
+
+#include <unistd.h>
 
 namespace cyclopt::storage {
 
@@ -42,40 +46,118 @@ JobRecord read_job(const Statement& s) {
   return r;
 }
 
+// A server needs to write the file and, in WAL mode, to create FILE-wal and FILE-shm beside it:
+// say so before SQLite's "unable to open database file" or "attempt to write a readonly database".
+const std::string& checked_path(const std::string& path, OpenMode mode) {
+  if (mode == OpenMode::read_only) return path;
+  namespace fs = std::filesystem;
+  const fs::path file(path);
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw StorageError("database '" + path + "': directory '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw StorageError("database '" + path + "': directory '" + dir.string() +
+                       "' is not writable (the server creates the database and its -wal/-shm files there)");
+  if (fs::exists(file, ec) && ::access(file.c_str(), W_OK) != 0)
+    throw StorageError("database '" + path + "': the file is read-only");
+  return path;
+}
+
+// PRAGMA quick_check: a server must not write new jobs into a damaged file.
+void check_integrity(Connection& db, const std::string& path) {
+  std::string first;
+  int problems = 0;
+  try {
+    Statement q(db, "PRAGMA quick_check(20)");
+    while (q.step()) {
+      const std::string row = q.text(0);
+      if (row == "ok") continue;
+      if (problems++ == 0) first = row;
+    }
+  } catch (const StorageError& e) {  // "file is not a database", "database disk image is malformed"
+    first = e.what();
+    problems = 1;
+  }
+  if (problems > 0)
+    throw StorageError("database '" + path + "' is damaged (PRAGMA quick_check: " + first +
+                       (problems > 1 ? ", and " + std::to_string(problems - 1) + " more" : "") +
+                       "); refusing to start. Move it away (a new database is created) or recover it with "
+                       "sqlite3 '" + path + "' .recover");
+}
+
+// Columns added after schema version 1 was first deployed: added in place to older files.
+void add_missing_columns(Connection& db) {
+  std::set<std::string> columns;
+  {
+    Statement q(db, "PRAGMA table_info(jobs)");
+    while (q.step()) columns.insert(q.text(1));
+  }
+  if (!columns.count("sender")) db.exec("ALTER TABLE jobs ADD COLUMN sender TEXT NOT NULL DEFAULT ''");
+  if (!columns.count("estimated_seconds")) db.exec("ALTER TABLE jobs ADD COLUMN estimated_seconds REAL");
+}
+
 }  // namespace
 
-ResultStore::ResultStore(const std::string& path, OpenMode mode) : db_(path, mode == OpenMode::read_only) {
+ResultStore::ResultStore(const std::string& path, OpenMode mode)
+    : db_(checked_path(path, mode), mode == OpenMode::read_only) {
   if (mode == OpenMode::read_only) {
     db_.exec("PRAGMA query_only = ON");
     return;
   }
+  check_integrity(db_, path);
   db_.exec("PRAGMA journal_mode = WAL");
   db_.exec("PRAGMA synchronous = NORMAL");
   db_.exec("PRAGMA foreign_keys = ON");
   db_.exec(results_schema_sql());
+  add_missing_columns(db_);
 }
 
-SubmitOutcome ResultStore::submit(const std::string& request_id, const std::string& scene, const std::string& task,
-                                  const std::string& spec_json) {
+SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quota) {
   std::lock_guard lock(mutex_);
   Transaction tx(db_);
   SubmitOutcome out;
   {
     Statement find(db_, "SELECT id, spec_json, state FROM jobs WHERE request_id = ?");
-    if (find.bind(1, request_id).step()) {
+    if (find.bind(1, sub.request_id).step()) {
       out.job_id = find.int64(0);
       out.duplicate = true;
-      out.spec_differs = find.text(1) != spec_json;
+      out.spec_differs = find.text(1) != sub.spec_json;
       out.state = job_state_from_string(find.text(2)).value_or(JobState::failed);
       return out;
     }
   }
-  Statement ins(db_, "INSERT INTO jobs (request_id, scene, task, spec_json, submitted_at) VALUES (?, ?, ?, ?, ?)");
-  ins.bind(1, request_id).bind(2, scene).bind(3, task).bind(4, spec_json).bind(5, unix_now()).run();
+  {
+    Statement queued(db_, "SELECT count(*), total(estimated_seconds) FROM jobs WHERE state = 'queued' AND sender = ?");
+    queued.bind(1, sub.sender).step();
+    out.queued_jobs = static_cast<int>(queued.int64(0));
+    out.queued_seconds = queued.real(1);
+  }
+  if (out.queued_jobs + 1 > quota.max_queued_jobs || out.queued_seconds + sub.estimated_seconds > quota.max_queued_seconds) {
+    out.over_quota = true;
+    return out;
+  }
+  Statement ins(db_,
+                "INSERT INTO jobs (request_id, scene, task, spec_json, submitted_at, sender, estimated_seconds) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?)");
+  ins.bind(1, sub.request_id)
+      .bind(2, sub.scene)
+      .bind(3, sub.task)
+      .bind(4, sub.spec_json)
+      .bind(5, unix_now())
+      .bind(6, sub.sender)
+      .bind(7, sub.estimated_seconds)
+      .run();
   out.job_id = db_.last_insert_rowid();
-  add_event_locked(out.job_id, "submitted", "request " + request_id);
+  add_event_locked(out.job_id, "submitted", "request " + sub.request_id);
   tx.commit();
   return out;
+}
+
+SubmitOutcome ResultStore::submit(const std::string& request_id, const std::string& scene, const std::string& task,
+                                  const std::string& spec_json) {
+  return submit({request_id, scene, task, spec_json, "", 0.0},
+                {std::numeric_limits<int>::max(), std::numeric_limits<double>::infinity()});
 }
 
 std::optional<JobRecord> ResultStore::claim_next() {
@@ -126,8 +208,13 @@ void ResultStore::return_to_queue(std::int64_t job_id, double run_seconds, doubl
                 "UPDATE jobs SET state = 'queued', started_at = NULL, run_seconds = run_seconds + ?, "
                 "publish_seconds = publish_seconds + ? WHERE id = ?");
   upd.bind(1, run_seconds).bind(2, publish_seconds).bind(3, job_id).run();
-  add_event_locked(job_id, "interrupted", why);
-  tx.commit();
+  tx.commit();  // the state first, in its own transaction: an UPDATE in place needs no new page
+  add_event_if_room_locked(job_id, "interrupted", why);
+}
+
+void ResultStore::add_run_seconds(std::int64_t job_id, double seconds) {
+  std::lock_guard lock(mutex_);
+  Statement(db_, "UPDATE jobs SET run_seconds = run_seconds + ? WHERE id = ?").bind(1, seconds).bind(2, job_id).run();
 }
 
 void ResultStore::finish(std::int64_t job_id, JobState final_state, const std::string& error, double run_seconds,
@@ -143,8 +230,8 @@ void ResultStore::finish(std::int64_t job_id, JobState final_state, const std::s
   else
     upd.bind(3, error);
   upd.bind(4, run_seconds).bind(5, publish_seconds).bind(6, job_id).run();
-  add_event_locked(job_id, std::string(to_string(final_state)), error);
-  tx.commit();
+  tx.commit();  // the state first (see return_to_queue)
+  add_event_if_room_locked(job_id, std::string(to_string(final_state)), error);
 }
 
 CancelOutcome ResultStore::cancel(std::int64_t job_id) {
@@ -237,6 +324,15 @@ void ResultStore::add_event_locked(std::int64_t job_id, const std::string& kind,
       .bind(3, kind)
       .bind(4, message)
       .run();
+}
+
+void ResultStore::add_event_if_room_locked(std::int64_t job_id, const std::string& kind, const std::string& message) {
+  try {
+    Transaction tx(db_);
+    add_event_locked(job_id, kind, message);
+    tx.commit();
+  } catch (const StorageError&) {  // SQLITE_FULL (which may roll back the whole transaction): drop the log line
+  }
 }
 
 std::optional<JobRecord> ResultStore::job(std::int64_t job_id) {

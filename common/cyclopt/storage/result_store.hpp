@@ -18,10 +18,30 @@ namespace cyclopt::storage {
 
 enum class OpenMode { read_write, read_only };
 
+// What a submission adds to the queue. sender identifies the submitter for the queue quota (the
+// authenticated key, or "" for unauthenticated clients, who then share one quota).
+struct Submission {
+  std::string request_id;
+  std::string scene;
+  std::string task;
+  std::string spec_json;
+  std::string sender;
+  double estimated_seconds = 0.0;  // the job's cost estimate (service/job_cost.hpp)
+};
+
+// Per-sender limits on queued (not yet running) jobs; checked in the submission's transaction.
+struct SenderQuota {
+  int max_queued_jobs = 100;
+  double max_queued_seconds = 7 * 86400.0;  // sum of their estimated_seconds
+};
+
 struct SubmitOutcome {
   std::int64_t job_id = 0;
   bool duplicate = false;     // request id known before: nothing was added
   bool spec_differs = false;  // ... and with a different spec
+  bool over_quota = false;    // not added: the sender's queued jobs would exceed the quota
+  int queued_jobs = 0;        // the sender's queued jobs before this submission
+  double queued_seconds = 0.0;  // ... and their estimated seconds
   JobState state = JobState::queued;
 };
 
@@ -38,13 +58,20 @@ class ResultStore {
   ResultStore(const std::string& path, OpenMode mode = OpenMode::read_write);
 
   // Queue.
+  SubmitOutcome submit(const Submission& s, const SenderQuota& quota);
+  // Without a sender, estimate or quota (tests, tools filling a database).
   SubmitOutcome submit(const std::string& request_id, const std::string& scene, const std::string& task,
                        const std::string& spec_json);
   std::optional<JobRecord> claim_next();  // oldest queued job -> running (attempts + 1)
   RecoverySummary recover_interrupted();  // running -> queued, or cancelled if cancel was asked
+  // run_seconds, publish_seconds: what this attempt adds to the job's totals (beyond what
+  // add_run_seconds() already recorded). Both commit the state change before its event, and the
+  // event only if the file has room for it, so a job's state can still be recorded on a full disk.
   void return_to_queue(std::int64_t job_id, double run_seconds, double publish_seconds, const std::string& why);
   void finish(std::int64_t job_id, JobState final_state, const std::string& error, double run_seconds,
               double publish_seconds);
+  // Checkpoints a running attempt's time, so it counts after a kill -9 too.
+  void add_run_seconds(std::int64_t job_id, double seconds);
   CancelOutcome cancel(std::int64_t job_id);
 
   // Results.
@@ -63,6 +90,7 @@ class ResultStore {
 
  private:
   void add_event_locked(std::int64_t job_id, const std::string& kind, const std::string& message);
+  void add_event_if_room_locked(std::int64_t job_id, const std::string& kind, const std::string& message);
   Connection db_;
   std::mutex mutex_;
 };

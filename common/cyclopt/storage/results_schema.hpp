@@ -14,8 +14,11 @@
 //     points_total  INTEGER               announced by the job kind (NULL until known)
 //     run_seconds, publish_seconds  REAL  wall time inside the job kind / CPU time its worker
 //                                         spent publishing progress, summed over attempts
-//                                         (an attempt ended by kill -9 is not counted)
+//                                         (run_seconds is checkpointed every 5 s and with every
+//                                         point, so a kill -9 loses at most that much)
 //     error         TEXT                  why a job failed (NULL otherwise)
+//     sender        TEXT                  who submitted it, for the queue quota ("" anonymous)
+//     estimated_seconds REAL              the cost estimate at submission (service/job_cost.hpp)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
 //                 requeued, cancel_requested, done, failed, cancelled, interrupted
 //   curves        (id, job_id, curve_index, name, parameter_name), UNIQUE(job_id, curve_index):

@@ -1,8 +1,8 @@
 // The QPSQP continuation (seed 001, Algorithm 2) on the point-foot walker over the mean speed,
 // and the sensitivity study of section 10.1 over a model parameter.
 #include "cyclopt/continuation/continuation_solver.hpp"
-#include "cyclopt/continuation/sensitivity.hpp"
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/studies/sensitivity.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 
@@ -12,6 +12,7 @@
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
 
 namespace {
 

@@ -3,7 +3,7 @@
 // the minimal step near 0.79 m/s (bench/results/speed_sweep_bench.txt), so the seed's workflow
 // leaves 0.8 and 0.9 m/s without a point. The recovery must give every speed a KKT point, say
 // which step found it, and each point must be a KKT point when solved again from it.
-#include "cyclopt/continuation/speed_sweep.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/solve.hpp"
 
@@ -13,6 +13,7 @@
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
 
 TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
   const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);

@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
+
+using continuation::ContinuationOptions;
 
 struct SensitivityOptions {
   std::vector<std::string> parameters;  // model parameter names; empty: all foot parameters
@@ -37,4 +39,4 @@ struct SensitivityCurve {
 std::vector<SensitivityCurve> sensitivity(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                                           const Eigen::VectorXd& z, const SensitivityOptions& options);
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

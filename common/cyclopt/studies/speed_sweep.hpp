@@ -32,7 +32,12 @@
 #include <string>
 #include <vector>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
+
+using continuation::ContinuationOptions;
+using continuation::ContinuationResult;
+using continuation::CurvePoint;
+using continuation::PointCallback;
 
 struct SpeedSweepOptions {
   std::vector<double> speeds;                       // the grid, strictly ascending, >= 2 values
@@ -108,4 +113,4 @@ struct SpeedSweepResult {
 SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                              const SpeedSweepOptions& options, const PointCallback& on_point = {});
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

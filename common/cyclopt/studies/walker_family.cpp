@@ -1,11 +1,11 @@
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 
 #include "cyclopt/walker/model_parameters.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
 
 ParametricProblem walker_family(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& options,
                                 const std::string& parameter) {
@@ -26,4 +26,4 @@ ParametricProblem walker_family(const walker::WalkerModel<double>& model, const 
           }};
 }
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

@@ -1,14 +1,17 @@
-#include "cyclopt/continuation/sensitivity.hpp"
+#include "cyclopt/studies/sensitivity.hpp"
 
 #include "cyclopt/continuation/continuation_solver.hpp"
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
+
+using continuation::ContinuationResult;
+using continuation::CurvePoint;
 
 std::vector<SensitivityCurve> sensitivity(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                                           const Eigen::VectorXd& z, const SensitivityOptions& o) {
@@ -48,4 +51,4 @@ std::vector<SensitivityCurve> sensitivity(const walker::WalkerModel<double>& mod
   return out;
 }
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

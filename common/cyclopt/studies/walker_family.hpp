@@ -6,11 +6,13 @@
 #include "cyclopt/walker/gait_problem.hpp"
 #include <string>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
+
+using continuation::ParametricProblem;
 
 // parameter: "speed" or a name from walker::model_parameter_names(model) (not one of the problem's
 // free parameters). Throws std::invalid_argument naming the parameter and the valid names.
 ParametricProblem walker_family(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& options,
                                 const std::string& parameter);
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

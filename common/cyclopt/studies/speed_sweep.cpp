@@ -1,6 +1,6 @@
-#include "cyclopt/continuation/speed_sweep.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
 
-#include "cyclopt/continuation/walker_family.hpp"
+#include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
@@ -15,7 +15,9 @@
 #include <set>
 #include <stdexcept>
 
-namespace cyclopt::continuation {
+namespace cyclopt::studies {
+
+using continuation::CurveJump;
 
 namespace {
 
@@ -417,4 +419,4 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   return Sweep(model, problem, options, on_point).run();
 }
 
-}  // namespace cyclopt::continuation
+}  // namespace cyclopt::studies

@@ -1,0 +1,22 @@
+# cmake -DGRAPH=module_graph.cmake -DROOT=<common/> -P CheckModuleIncludes.cmake
+# Fails when a file under ROOT/cyclopt/<module>/ includes "cyclopt/<other>/..." and <other> is
+# neither <module> nor one of its (transitive) link dependencies (CYCLOPT_DEPS_<module>).
+cmake_minimum_required(VERSION 3.25)
+include(${GRAPH})
+set(violations "")
+foreach(module IN LISTS CYCLOPT_MODULES)
+  file(GLOB files ${ROOT}/cyclopt/${module}/*.hpp ${ROOT}/cyclopt/${module}/*.cpp)
+  foreach(file IN LISTS files)
+    file(STRINGS ${file} includes REGEX "^#include \"cyclopt/[a-z_]+/")
+    foreach(line IN LISTS includes)
+      string(REGEX MATCH "cyclopt/([a-z_]+)/" _ "${line}")
+      if(NOT CMAKE_MATCH_1 IN_LIST CYCLOPT_DEPS_${module})
+        file(RELATIVE_PATH rel ${ROOT} ${file})
+        string(APPEND violations "  ${rel}: ${line} (cyclopt_${module} does not link cyclopt_${CMAKE_MATCH_1})\n")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(violations)
+  message(FATAL_ERROR "Includes against the module graph (link the module in its CMakeLists or move the code):\n${violations}")
+endif()

@@ -1,0 +1,29 @@
+#pragma once
+// The one adapter from solver iterations to the running job, used by every job kind: each
+// iteration counts towards the job's iteration limit, is reported as progress on top of what the
+// kind says about the point being solved, and stops the solver as soon as the job should stop.
+
+#include "cyclopt/nlp/solver_options.hpp"
+#include "cyclopt/service/job_context.hpp"
+#include "cyclopt/service/progress_report.hpp"
+
+#include <functional>
+
+namespace cyclopt::service {
+
+using IterationCallback = std::function<bool(const nlp::IterationReport&)>;
+
+// For SolverOptions::on_iteration of a solve on the job's own thread. `where` describes the point
+// (parameter, curve, points done/total, message); the callback fills in iteration, objective and
+// constraint violation. The callback holds a reference to ctx.
+IterationCallback solver_progress(JobContext& ctx, ProgressReport where);
+
+// For solves on other threads (nlp::multistart's workers), where JobContext's counting and
+// reporting may not be called: only honours stop requests.
+IterationCallback stop_requests(JobContext& ctx);
+
+// For SolverOptions::should_stop of every solve of the job (polled before each evaluation, from
+// any thread): cancel and the time limit then take effect within one evaluation.
+std::function<bool()> stop_predicate(JobContext& ctx);
+
+}  // namespace cyclopt::service
