@@ -41,12 +41,12 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
     std::mt19937_64 rng(options.base_seed + static_cast<std::uint64_t>(i));
     starts[static_cast<size_t>(i)] = sample_start(rng);
   }
-  MultistartResult result = multistart(make_problem, std::move(starts), options);
+  MultistartResult result = multistart_from(make_problem, std::move(starts), options);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return result;
 }
 
-MultistartResult multistart(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
+MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
                             const MultistartOptions& options) {
   if (starts.empty()) throw std::invalid_argument("multistart: starts must not be empty");
   MultistartOptions sized = options;

@@ -57,7 +57,7 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
                             const MultistartOptions& options);
 // The same from given starts (num_starts and base_seed are ignored; run i starts from starts[i]).
 // Throws std::invalid_argument when starts is empty.
-MultistartResult multistart(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
-                            const MultistartOptions& options);
+MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
+                                 const MultistartOptions& options);
 
 }  // namespace cyclopt::nlp

@@ -91,7 +91,7 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
   mo.solver.sqp.difference_hessian = true;
   const int n = static_cast<int>(starts.size());
   const std::clock_t cpu = std::clock();
-  nlp::MultistartResult m = nlp::multistart([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
+  nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
                                             std::move(starts), mo);
   r_.multistart_solves += n;
   r_.multistart_seconds += m.wall_seconds;
