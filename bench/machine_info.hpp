@@ -1,6 +1,8 @@
 #pragma once
 // What a benchmark ran on: printed at the top of every committed results table.
 
+#include <sys/resource.h>
+
 #include <fstream>
 #include <string>
 #include <thread>
@@ -17,6 +19,22 @@ inline std::string cpu_model() {
 
 inline std::string machine_line() {
   return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+// The machine is shared: every timing is printed with the load average (1, 5, 15 min) beside it.
+inline std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five, fifteen;
+  in >> one >> five >> fifteen;
+  return "load average " + one + " " + five + " " + fifteen;
+}
+
+// User + system CPU seconds of this process so far (all threads): less sensitive to the load
+// than wall time.
+inline double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 }  // namespace cyclopt::bench

@@ -4,7 +4,7 @@
 // successes, distinct optima with their counts, median and total solve time and the wall time.
 //
 // usage: multistart_bench [foot = point] [speed = 1.3] [N = 20] [configuration = sqp-dh] [scale = 0.05]
-#include "cyclopt/foot/foot_presets.hpp"
+#include "bench_foot.hpp"
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   const std::string config = argc > 4 ? argv[4] : "sqp-dh";
   const double scale = argc > 5 ? std::atof(argv[5]) : 0.05;
   std::printf("multistart_bench on %s\n", bench::machine_line().c_str());
-  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
+  const walker::WalkerModel<double> model = walker::make_walker_model(cyclopt::bench::bench_foot(foot_name));
   const walker::GaitProblemOptions po{walker::Objective::mechanical, speed, walker::Quadrature::trapezoid, {}};
   const walker::GaitEvaluator ev(model);
   const Eigen::VectorXd centre = walker::gait_start(ev, speed, {}).x;

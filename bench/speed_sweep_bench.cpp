@@ -4,10 +4,12 @@
 // with their speed ranges, the jumps, and per grid speed the selected curve and f_mech (or why
 // none). Issue 5 asks for <= 60 s wall per foot model.
 //
-// usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600]: the sweep is stopped at the
-// first point after the budget (then the per-speed table shows what was reached).
+// usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
+// [trapezoid|corrected]: foot is a preset name or a JSON foot file (bench/feet/); the sweep is stopped at
+// the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
+// recovery (R1-R3) off.
+#include "bench_foot.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
-#include "cyclopt/foot/foot_presets.hpp"
 #include "machine_info.hpp"
 
 #include <chrono>
@@ -26,20 +28,32 @@ int main(int argc, char** argv) {
   const int starts = argc > 2 ? std::atoi(argv[2]) : 4;
   const double budget = argc > 3 ? std::atof(argv[3]) : 600.0;
   const auto t0 = std::chrono::steady_clock::now();
-  std::printf("speed_sweep_bench on %s\n", cyclopt::bench::machine_line().c_str());
-  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
-  const walker::GaitProblemOptions po{walker::Objective::mechanical, 1.3, walker::Quadrature::trapezoid, {}};
+  std::printf("speed_sweep_bench on %s, %s at the start\n", bench::machine_line().c_str(), bench::load_average().c_str());
+  walker::WalkingConstants constants;
+  if (argc > 5) constants.points = std::atoi(argv[5]);
+  const walker::WalkerModel<double> model = walker::make_walker_model(bench::bench_foot(foot_name), constants);
+  const double cpu_at_start = bench::cpu_seconds();
+  const walker::Quadrature rule =
+      argc > 6 && std::string(argv[6]) == "corrected" ? walker::Quadrature::corrected_trapezoid : walker::Quadrature::trapezoid;
+  const walker::GaitProblemOptions po{walker::Objective::mechanical, 1.3, rule, {}};
   SpeedSweepOptions o;
   for (int i = 0; i <= 20; ++i) o.speeds.push_back(0.3 + 0.1 * i);
   o.starts = starts;
+  o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   const SpeedSweepResult r = speed_sweep(model, po, o, [&](const CurvePoint& p) {
     std::printf("  point v %.4f curve %d %s f %.6f (%d corrector iterations, %.2f s)\n", p.parameter, p.curve_id,
                 p.converged ? "ok    " : "FAILED", p.objective, p.corrector.iterations, p.seconds);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < budget;
   });
-  std::printf("\nfoot %s, f_mech, %d multistart runs per seed speed: %d curves, %zu continuation runs\n", foot_name.c_str(),
-              starts, r.curves, r.runs.size());
-  std::printf("wall time %.1f s (multistart %.1f s for %d solves)\n", r.seconds, r.multistart_seconds, r.multistart_solves);
+  std::printf("\nfoot %s, f_mech, P = %d, %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n", foot_name.c_str(),
+              constants.points, rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
+  // Idle estimate: the multistarts use both cores, the continuation runs one.
+  const double cpu = bench::cpu_seconds() - cpu_at_start;
+  std::printf("wall time %.1f s (multistart %.1f s for %d solves, recovery %.1f s), %s at the end\n", r.seconds,
+              r.multistart_seconds, r.multistart_solves, r.recovery_seconds, bench::load_average().c_str());
+  std::printf("CPU %.1f s user+sys (multistart %.1f s, the rest %.1f s): idle-machine wall estimate %.1f s\n", cpu,
+              r.multistart_cpu_seconds, cpu - r.multistart_cpu_seconds,
+              r.multistart_cpu_seconds / 2.0 + cpu - r.multistart_cpu_seconds);
   for (const ContinuationResult& run : r.runs) {
     std::printf("run %.2f -> %.2f: %zu points, %d corrector iterations, %.1f s, %s\n", run.points.front().parameter,
                 run.points.back().parameter, run.points.size(), run.corrector_iterations, run.seconds, run.message.c_str());
@@ -47,12 +61,19 @@ int main(int argc, char** argv) {
       std::printf("  jump curve %d -> %d between v = %.4f and %.4f: f %.6f -> %.6f\n", j.from_curve, j.to_curve,
                   j.from_parameter, j.to_parameter, j.objective_before, j.objective_after);
   }
+  for (const RecoveryAttempt& a : r.recoveries) {
+    std::printf("recovery at %.1f m/s (%s): %d solves, %.1f s, ", a.speed, a.trigger.c_str(), a.solves, a.seconds);
+    if (a.found)
+      std::printf("%s found f_mech %.6f\n", to_string(a.step), a.objective);
+    else
+      std::printf("nothing better\n");
+  }
   std::printf("\nbest per speed:\n");
   int found = 0;
   for (const BestPoint& b : r.best) {
     found += b.found;
     if (b.found)
-      std::printf("  %.1f m/s: curve %d, f_mech %.6f\n", b.speed, b.point.curve_id, b.point.objective);
+      std::printf("  %.1f m/s: curve %d, f_mech %.6f (%s)\n", b.speed, b.point.curve_id, b.point.objective, describe(b).c_str());
     else
       std::printf("  %.1f m/s: none (%s)\n", b.speed, b.reason.c_str());
   }

@@ -7,7 +7,7 @@
 //   options (integer, number or string, recognised in that order); the word difference_hessian
 //   sets SqpOptions::difference_hessian, difference_start IpoptOptions::difference_hessian_start, the word lbfgs Ipopt's limited-memory Hessian instead of the
 //   adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102).
-#include "cyclopt/foot/foot_presets.hpp"
+#include "bench_foot.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
 
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const std::string foot_name = argv[1];
-  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset(foot_name).spec);
+  const walker::WalkerModel<double> model = walker::make_walker_model(cyclopt::bench::bench_foot(foot_name));
   walker::GaitProblemOptions po{walker::Objective::mechanical, std::atof(argv[2]), walker::Quadrature::trapezoid, {}};
   nlp::SolverOptions so = nlp::seed_table_6_2_options();
   so.solver = nlp::parse_solver_kind(argv[3]);

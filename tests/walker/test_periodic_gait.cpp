@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 
 namespace cyclopt::walker {
 namespace {
@@ -154,6 +156,52 @@ TEST(Quadrature, CorrectedRuleConvergesFasterOnTheGait) {
   const double e_c = std::abs(corrected.floquet - fine.floquet), e_t = std::abs(trapezoid.floquet - fine.floquet);
   std::printf("Lambda error at P = 1600: trapezoid %.2e, corrected %.2e\n", e_t, e_c);
   EXPECT_LT(e_c, 1e-2 * e_t);
+}
+
+// f_mech's integrand max(p, 0): sin(3x) + 0.3 on [0, 2] changes sign four times. Exact integral
+// of the positive part from the closed-form roots; the seed's rule is second order, the new one fourth.
+TEST(Quadrature, PositivePartRuleIsFourthOrderAcrossSignChanges) {
+  const auto g = [](double x) { return std::sin(3.0 * x) + 0.3; };
+  const auto G = [](double x) { return -std::cos(3.0 * x) / 3.0 + 0.3 * x; };  // antiderivative
+  const double r = std::asin(0.3), pi = std::numbers::pi;
+  // g > 0 on [0, (pi + r)/3) and ((2 pi - r)/3, 2]: (3 pi + r)/3 = 3.24 > 2.
+  const double exact = G((pi + r) / 3.0) - G(0.0) + G(2.0) - G((2.0 * pi - r) / 3.0);
+  double err[2], err_seed[2];
+  int k = 0;
+  for (int P : {101, 201}) {
+    const double h = 2.0 / (P - 1);
+    Eigen::VectorXd f(P);
+    for (int i = 0; i < P; ++i) f(i) = g(i * h);
+    err[k] = std::abs(positive_part_integral(f, h) - exact);
+    double seed = 0.0;
+    for (int i = 0; i + 1 < P; ++i) seed += detail::positive_part_trapezoid(f(i), f(i + 1), h);
+    err_seed[k++] = std::abs(seed - exact);
+  }
+  std::printf("positive part of sin(3x) + 0.3: error %.2e / %.2e (P = 101 / 201, ratio %.1f); seed's rule %.2e / %.2e\n",
+              err[0], err[1], err[0] / err[1], err_seed[0], err_seed[1]);
+  EXPECT_GT(err[0] / err[1], 12.0);
+  EXPECT_LT(err[1], 1e-2 * err_seed[1]);
+}
+
+// The rule's derivative with respect to the samples (Dual) against central differences of its value.
+TEST(Quadrature, PositivePartRuleHasExactSampleDerivatives) {
+  const int P = 41;
+  const double h = 0.05;
+  Eigen::VectorXd f(P);
+  for (int i = 0; i < P; ++i) f(i) = std::sin(3.0 * i * h) + 0.3;
+  using D = ad::Dual<1>;
+  for (int j : {0, 5, 20, 21, 33, 40}) {  // 21 and 33 lie next to sign changes
+    Eigen::Matrix<D, Eigen::Dynamic, 1> fd(P);
+    for (int i = 0; i < P; ++i) fd(i) = D(f(i));
+    fd(j).d[0] = 1.0;
+    const double exact = positive_part_integral(fd, D(h)).d[0];
+    const double step = 1e-6;
+    Eigen::VectorXd up = f, down = f;
+    up(j) += step;
+    down(j) -= step;
+    const double diff = (positive_part_integral(up, h) - positive_part_integral(down, h)) / (2.0 * step);
+    EXPECT_NEAR(exact, diff, 1e-7) << "sample " << j;
+  }
 }
 
 }  // namespace

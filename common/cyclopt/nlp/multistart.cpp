@@ -34,16 +34,30 @@ MultistartResult multistart(const ProblemFactory& make_problem, const StartSampl
                             const MultistartOptions& options) {
   validate(options);
   const auto start_time = std::chrono::steady_clock::now();
-  const int n = options.num_starts;
-  MultistartResult result;
-  result.starts.resize(static_cast<size_t>(n));
-  result.runs.resize(static_cast<size_t>(n));
   const auto stopped = [&] { return options.solver.should_stop && options.solver.should_stop(); };
-  for (int i = 0; i < n; ++i) {
+  std::vector<Eigen::VectorXd> starts(static_cast<size_t>(options.num_starts));
+  for (int i = 0; i < options.num_starts; ++i) {
     if (stopped()) break;  // the unsampled starts stay empty and unsolved (user_stop)
     std::mt19937_64 rng(options.base_seed + static_cast<std::uint64_t>(i));
-    result.starts[static_cast<size_t>(i)] = sample_start(rng);
+    starts[static_cast<size_t>(i)] = sample_start(rng);
   }
+  MultistartResult result = multistart_from(make_problem, std::move(starts), options);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  return result;
+}
+
+MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
+                            const MultistartOptions& options) {
+  if (starts.empty()) throw std::invalid_argument("multistart: starts must not be empty");
+  MultistartOptions sized = options;
+  sized.num_starts = static_cast<int>(starts.size());
+  validate(sized);
+  const auto start_time = std::chrono::steady_clock::now();
+  const int n = sized.num_starts;
+  MultistartResult result;
+  result.starts = std::move(starts);
+  result.runs.resize(static_cast<size_t>(n));
+  const auto stopped = [&] { return options.solver.should_stop && options.solver.should_stop(); };
 
   const int threads = std::min(n, options.num_threads > 0 ? options.num_threads
                                                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));

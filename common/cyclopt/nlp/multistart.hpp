@@ -55,5 +55,9 @@ using StartSampler = std::function<Eigen::VectorXd(std::mt19937_64&)>;
 // worker threads and must not share mutable state.
 MultistartResult multistart(const ProblemFactory& make_problem, const StartSampler& sample_start,
                             const MultistartOptions& options);
+// The same from given starts (num_starts and base_seed are ignored; run i starts from starts[i]).
+// Throws std::invalid_argument when starts is empty.
+MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector<Eigen::VectorXd> starts,
+                                 const MultistartOptions& options);
 
 }  // namespace cyclopt::nlp

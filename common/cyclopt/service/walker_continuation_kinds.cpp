@@ -155,6 +155,7 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
     storage::SolutionPoint p;
     if (b.found) {
       p = store.point(b.point, {0, static_cast<int>(i)});
+      p.values["found_by"] = studies::describe(b);  // which sweep step found the point
     } else {
       p.key = {0, static_cast<int>(i)};
       p.parameter = b.speed;

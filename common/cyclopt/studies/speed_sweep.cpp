@@ -7,7 +7,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <deque>
+#include <limits>
+#include <map>
+#include <set>
 #include <stdexcept>
 
 namespace cyclopt::studies {
@@ -18,6 +23,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
+
 // A curve to continue from a solved point towards one end of the grid.
 struct Task {
   Eigen::VectorXd x;
@@ -25,6 +34,14 @@ struct Task {
   double direction = 1.0;  // +1 towards the largest speed
   int curve_id = 0;
   bool report_start = false;  // the start point is new (not reported by an earlier run)
+  bool recovery = false;      // stops where another curve is at least as good
+};
+
+// A grid speed to recover and the points to start from.
+struct Target {
+  std::size_t index = 0;  // into the grid
+  bool unreached = true;  // else: the selected point may be dominated by `seeds`' curve
+  std::vector<const CurvePoint*> seeds;
 };
 
 class Sweep {
@@ -36,9 +53,20 @@ class Sweep {
   SpeedSweepResult run();
 
  private:
-  std::optional<Eigen::VectorXd> multistart_at(double v);
+  walker::GaitProblemOptions at_speed(double v) const {
+    walker::GaitProblemOptions po = problem_;
+    po.speed = v;
+    return po;
+  }
+  nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts);
+  std::optional<Eigen::VectorXd> gait_multistart_at(double v, int* solves = nullptr);
   bool on_known_curve(double v, const Eigen::VectorXd& x, double f) const;
-  bool continue_task(const Task& t, std::deque<Task>& queue);
+  const CurvePoint* best_at(double v) const;
+  int open_curve(const CurveOrigin& origin);
+  void run_queue(std::deque<Task>& queue);
+  void continue_task(const Task& t, std::deque<Task>& queue);
+  std::optional<Target> next_target();
+  void recover(const Target& target);
   void select_best();
 
   const walker::WalkerModel<double>& model_;
@@ -48,29 +76,43 @@ class Sweep {
   const ParametricProblem family_;
   SpeedSweepResult r_;
   bool stopped_ = false;
+  std::vector<bool> seeded_;                    // per grid speed: a gait multistart ran there
+  std::vector<bool> unreached_tried_;           // per grid speed
+  std::set<std::pair<std::size_t, int>> dominance_tried_;  // (grid speed, neighbour's curve)
+  std::map<std::size_t, std::string> failures_;  // per grid speed: what recovery tried
 };
 
-std::optional<Eigen::VectorXd> Sweep::multistart_at(double v) {
-  walker::GaitProblemOptions po = problem_;
-  po.speed = v;
+nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts) {
+  const walker::GaitProblemOptions po = at_speed(v);
+  nlp::MultistartOptions mo;
+  mo.solver = o_.continuation.corrector;
+  // Solves from perturbed or distant starts start from W_1 of (6.24) - the seed's choice, W_1 = I
+  // is only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
+  mo.solver.sqp.difference_hessian = true;
+  const int n = static_cast<int>(starts.size());
+  const std::clock_t cpu = std::clock();
+  nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
+                                            std::move(starts), mo);
+  r_.multistart_solves += n;
+  r_.multistart_seconds += m.wall_seconds;
+  r_.multistart_cpu_seconds += static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
+  return m;
+}
+
+std::optional<Eigen::VectorXd> Sweep::gait_multistart_at(double v, int* solves) {
   const walker::GaitEvaluator ev(model_);
   walker::StartingGaitOptions so;
   so.speed = v;
   const walker::StartingGait sg = walker::starting_gait(ev, so);
   if (!sg.real) return std::nullopt;
-  const walker::GaitProblem shape(model_, po);
-  nlp::MultistartOptions mo;
-  mo.num_starts = o_.starts;
-  mo.base_seed = o_.seed;
-  mo.solver = o_.continuation.corrector;
-  // Solves from perturbed starting gaits start from W_1 of (6.24) - the seed's choice, W_1 = I is
-  // only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
-  mo.solver.sqp.difference_hessian = true;
-  const nlp::MultistartResult m = nlp::multistart(
-      [&] { return std::make_unique<walker::GaitProblem>(model_, po); },
-      [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)); }, mo);
-  r_.multistart_solves += o_.starts;
-  r_.multistart_seconds += m.wall_seconds;
+  const walker::GaitProblem shape(model_, at_speed(v));
+  std::vector<Eigen::VectorXd> starts;
+  for (int i = 0; i < o_.starts; ++i) {
+    std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
+    starts.push_back(shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)));
+  }
+  if (solves) *solves += o_.starts;
+  const nlp::MultistartResult m = solve_from(v, std::move(starts));
   if (m.optima.empty()) return std::nullopt;
   return m.optima.front().x;
 }
@@ -84,83 +126,285 @@ bool Sweep::on_known_curve(double v, const Eigen::VectorXd& x, double f) const {
   return false;
 }
 
+const CurvePoint* Sweep::best_at(double v) const {
+  const CurvePoint* best = nullptr;
+  for (const ContinuationResult& run : r_.runs)
+    for (const CurvePoint& p : run.points)
+      if (p.converged && p.on_grid && same_speed(p.parameter, v) && (!best || p.objective < best->objective)) best = &p;
+  return best;
+}
+
+int Sweep::open_curve(const CurveOrigin& origin) {
+  r_.origins.resize(static_cast<std::size_t>(r_.curves) + 1);
+  r_.origins.back() = origin;
+  return r_.curves++;
+}
+
+void Sweep::run_queue(std::deque<Task>& queue) {
+  while (!queue.empty() && !stopped_) {
+    const Task t = std::move(queue.front());
+    queue.pop_front();
+    continue_task(t, queue);
+  }
+}
+
 // Continues one task; queues the backward continuation of every new curve it jumps to.
-bool Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
+void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
   std::vector<double> grid{t.speed};
   for (double v : o_.speeds)
     if ((v - t.speed) * t.direction > 1e-12) grid.push_back(v);
   if (t.direction < 0) std::sort(grid.begin() + 1, grid.end(), std::greater<>());
-  if (grid.size() < 2) return true;
+  if (grid.size() < 2) return;
   bool repeated = !t.report_start;
+  std::optional<double> superseded;  // a recovery run stopped here: another curve is as good
+  std::optional<double> merged;      // the run stopped here: it joined an earlier run's curve
   const PointCallback forward = [&](const CurvePoint& p) {
     const bool skip = repeated;
     repeated = false;
-    return skip || !on_point_ || on_point_(p);
+    if (!skip && on_point_ && !on_point_(p)) {
+      stopped_ = true;
+      return false;
+    }
+    if (skip || !p.converged || !p.on_grid) return true;
+    // An earlier run followed this curve from here on already (both directions are continued
+    // from every start and every curve jumped to): HMT P2's runs from 1.3, 1.5 and 2.3 m/s
+    // otherwise each went down to the same fold near 0.46 m/s (~27 s each).
+    if (on_known_curve(p.parameter, p.x, p.objective)) {
+      merged = p.parameter;
+      return false;
+    }
+    if (t.recovery) {
+      const CurvePoint* other = best_at(p.parameter);
+      if (other && other->objective <= p.objective + o_.same_objective * std::max(1.0, std::abs(p.objective))) {
+        superseded = p.parameter;
+        return false;
+      }
+    }
+    return true;
   };
   ContinuationOptions continuation = o_.continuation;
   continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
+  const int first_new_curve = r_.curves;
   ContinuationResult run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
+  for (int c = first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
+    r_.origins[static_cast<std::size_t>(j.to_curve)].speed = j.to_parameter;
     if (j.to_curve >= o_.max_curves) continue;
     for (const CurvePoint& p : run.points)
       if (p.curve_id == j.to_curve && p.parameter == j.to_parameter) {
         // A jump onto a curve an earlier run already followed (the same optimum at the same speed)
         // needs no second backward continuation.
-        if (!on_known_curve(p.parameter, p.x, p.objective)) queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false});
+        if (!on_known_curve(p.parameter, p.x, p.objective))
+          queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false, t.recovery});
         break;
       }
   }
-  const bool go_on = run.message != "stopped";
+  if (merged && !stopped_)
+    run.message = "stopped at " + std::to_string(*merged) + " m/s: joined a curve an earlier run followed";
+  else if (superseded && !stopped_)
+    run.message = "stopped at " + std::to_string(*superseded) + " m/s: another curve is as good from there on";
+  else if (run.message == "stopped")  // the corrector's iteration callback asked to stop
+    stopped_ = true;
   r_.runs.push_back(std::move(run));
-  return go_on;
+}
+
+// Unreached speeds first (nearest to a reached one, then the lowest), then possibly dominated ones.
+std::optional<Target> Sweep::next_target() {
+  const std::size_t n = o_.speeds.size();
+  std::optional<Target> best;
+  std::size_t best_distance = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (r_.best[i].found || unreached_tried_[i]) continue;
+    std::size_t distance = n;
+    for (std::size_t j = 0; j < n; ++j)
+      if (r_.best[j].found) distance = std::min(distance, i > j ? i - j : j - i);
+    if (!best || distance < best_distance) {
+      best = Target{i, true, {}};
+      best_distance = distance;
+    }
+  }
+  if (best) {
+    // R1 starts: every curve's converged point nearest in speed to the target.
+    const double v = o_.speeds[best->index];
+    std::map<int, const CurvePoint*> nearest;
+    for (const ContinuationResult& run : r_.runs)
+      for (const CurvePoint& p : run.points) {
+        const CurvePoint*& q = nearest[p.curve_id];
+        if (p.converged && (!q || std::abs(p.parameter - v) < std::abs(q->parameter - v))) q = &p;
+      }
+    for (const auto& [curve, p] : nearest)
+      if (p) best->seeds.push_back(p);
+    std::sort(best->seeds.begin(), best->seeds.end(), [v](const CurvePoint* a, const CurvePoint* b) {
+      return std::abs(a->parameter - v) < std::abs(b->parameter - v);
+    });
+    return best;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!r_.best[i].found) continue;
+    const double v = o_.speeds[i];
+    for (std::size_t j : {i - 1, i + 1}) {  // i - 1 wraps to a huge value for i = 0
+      if (j >= n || !r_.best[j].found) continue;
+      const CurvePoint& neighbour = r_.best[j].point;
+      if (neighbour.curve_id == r_.best[i].point.curve_id || dominance_tried_.count({i, neighbour.curve_id})) continue;
+      bool reaches = false;  // the neighbour's curve has a converged point at v already
+      for (const ContinuationResult& run : r_.runs)
+        for (const CurvePoint& p : run.points) reaches = reaches || (p.converged && p.curve_id == neighbour.curve_id && same_speed(p.parameter, v));
+      dominance_tried_.insert({i, neighbour.curve_id});
+      if (!reaches) return Target{i, false, {&neighbour}};
+    }
+  }
+  return std::nullopt;
+}
+
+void Sweep::recover(const Target& target) {
+  const Clock::time_point t0 = Clock::now();
+  const double v = o_.speeds[target.index];
+  RecoveryAttempt a;
+  a.speed = v;
+  a.trigger = target.unreached ? "unreached"
+                               : "dominated? curve " + std::to_string(target.seeds.front()->curve_id) + " is best at " +
+                                     std::to_string(target.seeds.front()->parameter) + " m/s";
+  // A recovered point must beat the selected one (if any) by more than same_objective.
+  const CurvePoint* current = best_at(v);
+  const double bound = current ? current->objective - o_.same_objective * std::max(1.0, std::abs(current->objective))
+                               : std::numeric_limits<double>::infinity();
+  std::optional<Eigen::VectorXd> x;
+  double f = bound;
+  auto take = [&](const nlp::MultistartResult& m, SweepStep step) {
+    a.solves += static_cast<int>(m.runs.size());
+    if (m.optima.empty() || !(m.optima.front().objective < bound)) return false;
+    x = m.optima.front().x;
+    f = m.optima.front().objective;
+    a.step = step;
+    return true;
+  };
+  std::vector<Eigen::VectorXd> starts;
+  std::string curves;
+  for (const CurvePoint* p : target.seeds) {
+    starts.push_back(p->x);
+    curves += (curves.empty() ? "" : ", ") + std::to_string(p->curve_id) + " at " + std::to_string(p->parameter);
+  }
+  bool found = !starts.empty() && take(solve_from(v, starts), SweepStep::neighbour_start);
+  if (!found && target.unreached && !starts.empty()) {
+    const walker::GaitProblem shape(model_, at_speed(v));
+    const walker::GaitEvaluator ev(model_);
+    std::vector<Eigen::VectorXd> perturbed;
+    for (int i = 0; i < o_.starts; ++i) {
+      std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
+      Eigen::VectorXd z = starts[static_cast<std::size_t>(i) % starts.size()];
+      z.head(shape.gait_parameters(z).size()) = walker::perturbed_gait(ev, shape.gait_parameters(z), o_.scale, rng);
+      perturbed.push_back(std::move(z));
+    }
+    found = take(solve_from(v, std::move(perturbed)), SweepStep::neighbour_multistart);
+  }
+  if (!found && target.unreached && !seeded_[target.index]) {
+    seeded_[target.index] = true;
+    int solves = 0;
+    const std::optional<Eigen::VectorXd> g = gait_multistart_at(v, &solves);
+    a.solves += solves;
+    if (g) {
+      nlp::Evaluation e;
+      walker::GaitProblem(model_, at_speed(v)).evaluate(*g, false, e);
+      x = g;
+      f = e.objective;
+      a.step = SweepStep::gait_multistart;
+      found = true;
+    }
+  }
+  if (target.unreached) unreached_tried_[target.index] = true;
+  if (found && r_.curves < o_.max_curves) {
+    a.found = true;
+    a.objective = f;
+    const int id = open_curve({a.step, v});
+    std::deque<Task> queue{{*x, v, 1.0, id, true, true}, {*x, v, -1.0, id, false, true}};
+    run_queue(queue);
+  } else if (target.unreached) {
+    failures_[target.index] =
+        found ? "a KKT point was found by recovery but max_curves (" + std::to_string(o_.max_curves) + ") curves are in use"
+              : "no KKT point: continuation did not reach this speed; R1 solves here from the nearest points of curves (" +
+                    curves + " m/s), R2 " + std::to_string(o_.starts) +
+                    " perturbations of them and the starting-gait multistart here found none; more starts (starts), "
+                    "another seed or a smaller continuation.min_trust_region may help";
+  }
+  a.seconds = seconds_since(t0);
+  r_.recovery_seconds += a.seconds;
+  r_.recoveries.push_back(std::move(a));
 }
 
 void Sweep::select_best() {
-  for (double v : o_.speeds) {
+  r_.best.clear();
+  for (std::size_t i = 0; i < o_.speeds.size(); ++i) {
     BestPoint b;
-    b.speed = v;
-    for (const ContinuationResult& run : r_.runs)
-      for (const CurvePoint& p : run.points)
-        if (p.converged && p.on_grid && std::abs(p.parameter - v) <= 1e-12 * std::max(1.0, v) &&
-            (!b.found || p.objective < b.point.objective)) {
-          b.found = true;
-          b.point = p;
-        }
-    if (!b.found) b.reason = "no curve reached this speed with a KKT point";
+    b.speed = o_.speeds[i];
+    if (const CurvePoint* p = best_at(b.speed)) {
+      b.found = true;
+      b.point = *p;
+      b.origin = r_.origins[static_cast<std::size_t>(p->curve_id)];
+    } else {
+      const auto failure = failures_.find(i);
+      b.reason = failure != failures_.end() ? failure->second : "no curve reached this speed with a KKT point";
+    }
     r_.best.push_back(std::move(b));
   }
 }
 
 SpeedSweepResult Sweep::run() {
   const Clock::time_point start = Clock::now();
-  std::deque<Task> queue;
+  const std::size_t n = o_.speeds.size();
+  seeded_.assign(n, false);
+  unreached_tried_.assign(n, false);
   for (double s : o_.seed_speeds) {
-    const double v = *std::min_element(o_.speeds.begin(), o_.speeds.end(),
-                                       [s](double a, double b) { return std::abs(a - s) < std::abs(b - s); });
-    const std::optional<Eigen::VectorXd> x = multistart_at(v);
+    const std::size_t i = static_cast<std::size_t>(
+        std::min_element(o_.speeds.begin(), o_.speeds.end(), [s](double a, double b) { return std::abs(a - s) < std::abs(b - s); }) -
+        o_.speeds.begin());
+    const double v = o_.speeds[i];
+    if (seeded_[i]) continue;
+    seeded_[i] = true;
+    const std::optional<Eigen::VectorXd> x = gait_multistart_at(v);
     if (!x) continue;
     nlp::Evaluation e;
-    walker::GaitProblemOptions po = problem_;
-    po.speed = v;
-    if (!walker::GaitProblem(model_, po).evaluate(*x, false, e).ok || on_known_curve(v, *x, e.objective)) continue;
+    if (!walker::GaitProblem(model_, at_speed(v)).evaluate(*x, false, e).ok || on_known_curve(v, *x, e.objective)) continue;
     if (r_.curves >= o_.max_curves) break;
-    const int id = r_.curves++;
-    queue.push_back({*x, v, 1.0, id, true});
-    queue.push_back({*x, v, -1.0, id, false});
-    while (!queue.empty() && !stopped_) {
-      const Task t = std::move(queue.front());
-      queue.pop_front();
-      stopped_ = !continue_task(t, queue);
-    }
+    const int id = open_curve({SweepStep::seed_multistart, v});
+    std::deque<Task> queue{{*x, v, 1.0, id, true, false}, {*x, v, -1.0, id, false, false}};
+    run_queue(queue);
     if (stopped_) break;
   }
   select_best();
-  r_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (o_.recover && !stopped_) {
+    const Clock::time_point recovery_start = Clock::now();
+    while (!stopped_) {
+      const std::optional<Target> target = next_target();
+      if (!target) break;
+      recover(*target);
+      select_best();
+    }
+    r_.recovery_seconds = seconds_since(recovery_start);
+  }
+  r_.seconds = seconds_since(start);
   return std::move(r_);
 }
 
 }  // namespace
+
+const char* to_string(SweepStep step) {
+  switch (step) {
+    case SweepStep::seed_multistart: return "multistart at a seed speed";
+    case SweepStep::jump: return "jump of a continuation run";
+    case SweepStep::neighbour_start: return "R1 neighbour start";
+    case SweepStep::neighbour_multistart: return "R2 neighbour multistart";
+    case SweepStep::gait_multistart: return "R3 gait multistart";
+  }
+  return "?";
+}
+
+std::string describe(const BestPoint& best) {
+  if (!best.found) return best.reason;
+  char at[64];
+  std::snprintf(at, sizeof at, " at %.4g m/s", best.origin.speed);
+  return std::string(to_string(best.origin.step)) + at + (same_speed(best.point.parameter, best.origin.speed) ? "" : ", continued");
+}
 
 SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                              const SpeedSweepOptions& options, const PointCallback& on_point) {

@@ -6,6 +6,25 @@
 //   3. every curve jumped to is continued back, against the direction it was found in, so its
 //      extent is known (the seed chose the existence ranges by hand);
 //   4. per grid speed, the best converged point of all curves is selected (by hand in the seed).
+// A run stops where it joins a curve an earlier run followed (a converged point at a grid speed
+// with the same f and x, same_objective / same_x): from there on that run's result is known.
+// Beyond the seed (issue 16), the sweep then recovers every grid speed that no curve reached with a
+// KKT point (a continuation stopped at the minimal step before it, or ended at a fold), and every
+// point that may be dominated (a neighbouring speed's best curve did not reach this speed, so the
+// selected point may be a worse local optimum than that curve would give). Per target speed, in
+// this order until one gives a KKT point:
+//   R1 neighbour start: a solve at the speed from the converged point nearest in speed of each
+//      curve (the dominated test: only from the neighbour's point), jumping over the place where
+//      continuation failed;
+//   R2 neighbour multistart (unreached speeds only): `starts` perturbations of those points;
+//   R3 gait multistart (unreached speeds that were no seed speed): `starts` perturbations of the
+//      automatic starting gait at that speed, as at the seed speeds.
+// A recovered point better than what the speed had opens a new curve, continued with QPSQP in
+// both directions while it is the best known (a run stops at the first grid speed where another
+// curve is at least as good), so it fills the neighbouring gaps too. Targets nearest to a reached
+// speed go first; each target and each (speed, neighbour curve) pair is tried once, so the
+// recovery ends. A speed still without a point gets a reason naming what was tried and which
+// options to change. BestPoint::step tells which step found the curve through the selected point.
 #include "cyclopt/continuation/continuation_solver.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include <cstdint>
@@ -26,7 +45,8 @@ struct SpeedSweepOptions {
   int starts = 20;                                  // multistart runs per seed speed (seed: 20)
   std::uint64_t seed = 1;                           // base seed of the random perturbations
   double scale = 0.05;                              // rad, of the perturbations
-  int max_curves = 12;                              // curves continued at most (each jump opens one)
+  int max_curves = 24;                              // curves continued at most (each jump or recovery opens one)
+  bool recover = true;                              // R1-R3 above; false: the seed's workflow only
   // A seed optimum lies on a known curve if a converged point there has |f - f_c| <=
   // same_objective * max(1, |f|) and |x - x_c|_inf <= same_x.
   double same_objective = 1e-6;
@@ -39,19 +59,52 @@ struct SpeedSweepOptions {
   int corrector_max_iterations = 300;
 };
 
+// The step of the sweep that found a curve (the first point of it).
+enum class SweepStep {
+  seed_multistart,       // step 1: multistart from the automatic starting gait at a seed speed
+  jump,                  // a continuation run converged onto another curve (curve_jump.hpp)
+  neighbour_start,       // R1
+  neighbour_multistart,  // R2
+  gait_multistart,       // R3
+};
+const char* to_string(SweepStep step);
+
+struct CurveOrigin {
+  SweepStep step = SweepStep::seed_multistart;
+  double speed = 0.0;  // where the step found the curve's first point
+};
+
 struct BestPoint {
   double speed = 0.0;
   bool found = false;
   CurvePoint point;    // when found
+  CurveOrigin origin;  // of point.curve_id, when found
   std::string reason;  // when not
+};
+// "R1 neighbour start at 0.40 m/s, continued" (how the point was found) or the reason.
+std::string describe(const BestPoint& best);
+
+// One recovery target and what was tried there.
+struct RecoveryAttempt {
+  double speed = 0.0;
+  std::string trigger;  // "unreached" or "dominated? curve c is best at v m/s"
+  int solves = 0;       // R1-R3 local solves spent
+  bool found = false;   // a better KKT point than the speed had
+  SweepStep step = SweepStep::neighbour_start;  // that found it (when found)
+  double objective = 0.0;                       // when found
+  double seconds = 0.0;
 };
 
 struct SpeedSweepResult {
   std::vector<ContinuationResult> runs;  // in the order run
   std::vector<BestPoint> best;           // one per grid speed
+  std::vector<RecoveryAttempt> recoveries;  // in the order tried
+  std::vector<CurveOrigin> origins;      // of curve id 0 .. curves - 1
   int curves = 0;                        // curve ids used: 0 .. curves - 1
-  int multistart_solves = 0;
+  int multistart_solves = 0;             // step 1 and R1-R3
   double multistart_seconds = 0.0;
+  double multistart_cpu_seconds = 0.0;   // process CPU time during them (all threads)
+  double recovery_seconds = 0.0;         // R1-R3 with their continuation runs
   double seconds = 0.0;
 };
 

@@ -223,8 +223,9 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
   g.impulse = vc.unit_impact.impulse * td_minus;
   g.impact_energy_loss = (vc.unit_impact.kinetic_energy_minus - vc.unit_impact.kinetic_energy_plus) * td_minus * td_minus;
 
-  // Energy per step (5.98-5.102): trapezoid in time with zero-crossing correction for f_mech; f_usq
-  // by the trapezoid rule in time (the seed's) or the corrected rule in theta (dt = d theta / theta_dot).
+  // Energy per step (5.98-5.102), the seed's rules: trapezoid in time with the zero-crossing
+  // correction for f_mech, trapezoid in time for f_usq; corrected rules: in theta (dt = d theta /
+  // theta_dot), positive_part_integral for f_mech and the corrected trapezoid for f_usq.
   const T weight_step = m.total_mass * T(m.constants.gravity) * g.step_length;
   const T c_A = T(m.constants.actuator_constant);
   // Joint powers u_j q_dot_j and sum_j u_j^2 once per grid point.
@@ -236,8 +237,16 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
   }
   for (int i = 0; i + 1 < P; ++i) dt(i) = tr.time(i + 1) - tr.time(i);
   T e_mech = T(0.0), e_usq = T(0.0);
-  for (int j = 0; j < nb; ++j)
-    for (int i = 0; i + 1 < P; ++i) e_mech += detail::positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
+  if (opt.quadrature == Quadrature::trapezoid) {
+    for (int j = 0; j < nb; ++j)
+      for (int i = 0; i + 1 < P; ++i) e_mech += detail::positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
+  } else {  // in theta: int max(p, 0) dt = int max(p / theta_dot, 0) d theta
+    Vector<T> power_per_theta(P);
+    for (int j = 0; j < nb; ++j) {
+      for (int i = 0; i < P; ++i) power_per_theta(i) = power(j, i) / theta_dot(i);
+      e_mech += positive_part_integral(power_per_theta, h);
+    }
+  }
   if (opt.quadrature == Quadrature::trapezoid) {
     for (int i = 0; i + 1 < P; ++i) e_usq += (usq(i) + usq(i + 1)) * dt(i);
     e_usq *= 0.5 * c_A;

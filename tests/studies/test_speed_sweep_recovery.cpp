@@ -1,0 +1,53 @@
+// The speed sweep's recovery (speed_sweep.hpp, R1-R3) on a case where plain continuation stops
+// early: point feet seeded only at 0.6 m/s follow the low-speed curve, whose continuation fails at
+// the minimal step near 0.79 m/s (bench/results/speed_sweep_bench.txt), so the seed's workflow
+// leaves 0.8 and 0.9 m/s without a point. The recovery must give every speed a KKT point, say
+// which step found it, and each point must be a KKT point when solved again from it.
+#include "cyclopt/studies/speed_sweep.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/nlp/solve.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace cyclopt;
+using namespace cyclopt::continuation;
+using namespace cyclopt::studies;
+
+TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
+  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
+  const walker::GaitProblemOptions problem{walker::Objective::mechanical, 0.6, walker::Quadrature::trapezoid, {}};
+  SpeedSweepOptions o;
+  o.speeds = {0.6, 0.7, 0.8, 0.9};
+  o.seed_speeds = {0.6};
+  o.starts = 2;
+  const SpeedSweepResult r = speed_sweep(model, problem, o);
+  for (const ContinuationResult& run : r.runs)
+    std::printf("run %.3f -> %.3f (curve %d): %s\n", run.points.front().parameter, run.points.back().parameter,
+                run.points.front().curve_id, run.message.c_str());
+  for (const BestPoint& b : r.best) std::printf("%.1f m/s: f %.6f, %s\n", b.speed, b.point.objective, describe(b).c_str());
+
+  // The seed's workflow alone (curves from the seed multistart and their jumps) stops early.
+  bool stopped_early = false;
+  for (const ContinuationResult& run : r.runs)
+    stopped_early = stopped_early || run.message.find("minimal step") != std::string::npos;
+  EXPECT_TRUE(stopped_early);
+  int recovered = 0;
+  for (const BestPoint& b : r.best) {
+    ASSERT_TRUE(b.found) << b.speed << " m/s: " << b.reason;
+    if (b.origin.step != SweepStep::seed_multistart && b.origin.step != SweepStep::jump) ++recovered;
+    // Independently: a fresh SQP solve from the stored point stops at once with the same f.
+    walker::GaitProblemOptions at = problem;
+    at.speed = b.speed;
+    walker::GaitProblem p(model, at);
+    nlp::SolverOptions so = nlp::seed_table_6_2_options();
+    so.sqp.difference_hessian = true;
+    const nlp::SolverSummary again = nlp::solve(p, so, b.point.x);
+    EXPECT_TRUE(again.success()) << b.speed;
+    EXPECT_LE(again.iterations, 5) << b.speed;
+    EXPECT_NEAR(again.objective, b.point.objective, 1e-6 * b.point.objective) << b.speed;
+  }
+  EXPECT_GE(recovered, 1);
+  EXPECT_FALSE(r.recoveries.empty());
+}
