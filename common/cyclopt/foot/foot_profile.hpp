@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace cyclopt::foot {
 
@@ -139,6 +140,18 @@ T curvature_radius_term(const Transition<S>& tr, const T& a) {
   return T(tr.length) / (2.0 * k) * tt.s * convexity_bracket(a, k, tt.t);
 }
 
+// Length sqrt(x^2 + z^2) and direction atan2(z, x) of a polygon edge. An edge that vanishes (the
+// polygon degenerating at the ankle: h_F -> 0 together with l_HA -> 0 or l_HM - l_HA -> 0, the
+// "stilt" of seed 001 section 10.2) has length 0 and a constant direction (that of +x, which it
+// has in the limit z = 0, x -> 0+), so no 0/0 enters the derivatives; it contributes nothing to F.
+template <class S>
+std::pair<S, S> edge_length_and_direction(const S& z, const S& x) {
+  using std::atan2, std::sqrt;
+  using ad::atan2;
+  if (ad::value(z) == 0.0 && ad::value(x) == 0.0) return {S(0.0), S(0.0)};
+  return {sqrt(z * z + x * x), atan2(z, x)};
+}
+
 }  // namespace detail
 
 // Builds the profile of a foot model from its parameter vector (eq. 3.20, 3.23). Validation of
@@ -158,9 +171,11 @@ FootProfile<S> make_profile(FootModel model, const FootParameters<S>& p, int per
     case FootModel::hm: {
       const S h = p[hm::h_F], a = p[hm::l_HA], l = p[hm::l_HM];
       const S b = l - a;  // ankle projection to M
-      prof.transitions[0] = {sqrt(h * h + a * a), S(-pi) + atan2(h, a), p[hm::k_H]};   // (3.20a)
-      prof.transitions[1] = {l, S(0.0), p[hm::k_HM]};                                  // (3.20b)
-      prof.transitions[2] = {sqrt(h * h + b * b), S(pi) - atan2(h, b), p[hm::k_M]};    // (3.20c)
+      const auto [heel, heel_angle] = detail::edge_length_and_direction(h, a);
+      const auto [front, front_angle] = detail::edge_length_and_direction(h, b);
+      prof.transitions[0] = {heel, S(-pi) + heel_angle, p[hm::k_H]};    // (3.20a)
+      prof.transitions[1] = {l, S(0.0), p[hm::k_HM]};                   // (3.20b)
+      prof.transitions[2] = {front, S(pi) - front_angle, p[hm::k_M]};   // (3.20c)
       prof.transition_count = 3;
       break;
     }
@@ -168,10 +183,12 @@ FootProfile<S> make_profile(FootModel model, const FootParameters<S>& p, int per
       const S h = p[hmt::h_F], a = p[hmt::l_HA], l = p[hmt::l_HM], lt = p[hmt::l_MT], g = p[hmt::gamma_F];
       const S tz = h - lt * sin(g);        // depth of the toe tip T below the ankle
       const S tx = l - a + lt * cos(g);    // forward distance of T from the ankle
-      prof.transitions[0] = {sqrt(h * h + a * a), S(-pi) + atan2(h, a), p[hmt::k_H]};  // (3.23a)
-      prof.transitions[1] = {l, S(0.0), p[hmt::k_HM]};                                 // (3.23b)
-      prof.transitions[2] = {lt, g, p[hmt::k_MT]};                                     // (3.23c)
-      prof.transitions[3] = {sqrt(tz * tz + tx * tx), S(pi) - atan2(tz, tx), p[hmt::k_T]};  // (3.23d)
+      const auto [heel, heel_angle] = detail::edge_length_and_direction(h, a);
+      const auto [front, front_angle] = detail::edge_length_and_direction(tz, tx);
+      prof.transitions[0] = {heel, S(-pi) + heel_angle, p[hmt::k_H]};  // (3.23a)
+      prof.transitions[1] = {l, S(0.0), p[hmt::k_HM]};                 // (3.23b)
+      prof.transitions[2] = {lt, g, p[hmt::k_MT]};                     // (3.23c)
+      prof.transitions[3] = {front, S(pi) - front_angle, p[hmt::k_T]};  // (3.23d)
       prof.transition_count = 4;
       break;
     }

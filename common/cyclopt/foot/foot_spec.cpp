@@ -69,7 +69,7 @@ void validate(const FootSpec& spec, const std::string& path) {
     throw SpecError(path + ".periodic_terms",
                     "must be an integer in [0, " + std::to_string(kMaxPeriodicTerms) + "], got " +
                         std::to_string(spec.periodic_terms));
-  if (spec.density) check_range(*spec.density, path + ".density", 1e-6, kMaxDensity, "kg/m^2");
+  if (spec.density) check_range(*spec.density, path + ".density", kMinDensity, kMaxDensity, "kg/m^2");
   if (spec.theta_F0) check_range(*spec.theta_F0, path + ".theta_F0", -std::numbers::pi, std::numbers::pi, "rad");
 }
 
@@ -112,7 +112,7 @@ FootSpec foot_spec_from_json(const nlohmann::json& j, const std::string& path) {
                       "must be an integer in [0, " + std::to_string(kMaxPeriodicTerms) + "], got " + v.dump());
     spec.periodic_terms = v.get<int>();
   }
-  if (j.contains("density")) spec.density = number_field(j, "density", path, 1e-6, kMaxDensity, "kg/m^2");
+  if (j.contains("density")) spec.density = number_field(j, "density", path, kMinDensity, kMaxDensity, "kg/m^2");
   if (j.contains("theta_F0"))
     spec.theta_F0 = number_field(j, "theta_F0", path, -std::numbers::pi, std::numbers::pi, "rad");
   if (j.contains("name")) {

@@ -41,6 +41,7 @@ class SpecError : public std::invalid_argument {
 };
 
 inline constexpr int kMaxPeriodicTerms = 8;
+inline constexpr double kMinDensity = 1e-6;    // kg/m^2
 inline constexpr double kMaxDensity = 1000.0;  // kg/m^2
 
 // Parses and validates; `path` prefixes field names in error messages.

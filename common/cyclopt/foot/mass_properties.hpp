@@ -97,6 +97,7 @@ template <class S>
 FootMassProperties<S> mass_properties(const FootProfile<S>& prof, const S& density,
                                       const MassPropertyOptions& opt = {}) {
   using std::atan2, std::sqrt;
+  using ad::atan2;
   const std::vector<S> br = detail::panel_breakpoints(prof, opt.max_panel_width);
   // Integrals of f R, C_x f R, C_z f R and |C|^2 f R over the turn.
   S i0 = S(0.0), ix = S(0.0), iz = S(0.0), i2 = S(0.0);
@@ -107,7 +108,7 @@ FootMassProperties<S> mass_properties(const FootProfile<S>& prof, const S& densi
     i0 += w;
     ix += w * C.x();
     iz += w * C.y();
-    i2 += w * C.squaredNorm();
+    i2 += w * (C.x() * C.x() + C.y() * C.y());  // not squaredNorm(): it conjugates complex steps
   };
   for (std::size_t j = 0; j + 1 < br.size(); ++j) {
     const S mid = 0.5 * (br[j] + br[j + 1]);
@@ -118,6 +119,13 @@ FootMassProperties<S> mass_properties(const FootProfile<S>& prof, const S& densi
     }
   }
   FootMassProperties<S> mp;
+  if (!(ad::value(i0) > 0.0)) {
+    // No enclosed area (every edge vanished, the massless "stilt" of section 10.2): a massless
+    // foot with its centre of mass at the ankle and theta_F,0 = pi, finite and constant.
+    mp.area = mp.mass = mp.com_x = mp.com_z = mp.inertia_ankle = mp.inertia_com = mp.com_distance = S(0.0);
+    mp.theta_F0 = S(std::numbers::pi);
+    return mp;
+  }
   mp.area = 0.5 * i0;                      // (E.2)
   mp.mass = density * mp.area;             // (E.3)
   mp.com_x = ix / (3.0 * mp.area);         // (E.4a)

@@ -53,10 +53,17 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec) {
   }
   if (j.parameter != "speed") {
     if (!c.contains("values")) throw SpecError("continuation.values", "is required when continuation.parameter is not speed");
-    j.values = parse_value_range(c["values"], "continuation.values", -1e3, 1e3);
+    const walker::WalkerModel<double> model = j.walker.model();
+    const int index = walker::model_parameter_index(model, j.parameter);
+    const auto [lo, hi] = walker::model_parameter_range(model, index);
+    j.values = parse_value_range(c["values"], "continuation.values", lo, hi);
     if (std::find(j.walker.problem.free_parameters.begin(), j.walker.problem.free_parameters.end(), j.parameter) !=
         j.walker.problem.free_parameters.end())
       throw SpecError("continuation.parameter", "must not be one of free_parameters");
+    if (walker::follows_foot_geometry(model, index))
+      throw SpecError("continuation.parameter", "'" + j.parameter +
+                                                    "' follows the foot geometry when foot.density is given (appendix "
+                                                    "E); continue a foot parameter or \"density\" instead");
   }
   if (j.values.size() < 2) throw SpecError(j.parameter == "speed" ? "speeds" : "continuation.values", "needs at least two values");
   return j;

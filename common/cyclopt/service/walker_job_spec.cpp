@@ -1,6 +1,7 @@
 #include "cyclopt/service/walker_job_spec.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/service/design_bounds_spec.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -19,8 +20,8 @@ foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
 }
 
 std::vector<std::string> walker_job_fields(bool sweep) {
-  return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "free_parameters", "start",
-          "multistart"};
+  return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "free_parameters", "design_bounds",
+          "start", "multistart"};
 }
 
 WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
@@ -49,9 +50,16 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
     const nlohmann::json& fp = spec["free_parameters"];
     if (!fp.is_array()) throw SpecError("free_parameters", "must be an array of model parameter names");
     const std::vector<std::string> names = walker::model_parameter_names(model);
-    for (std::size_t i = 0; i < fp.size(); ++i)
-      job.problem.free_parameters.push_back(enum_value(fp[i], "free_parameters[" + std::to_string(i) + "]", names));
+    for (std::size_t i = 0; i < fp.size(); ++i) {
+      const std::string field = "free_parameters[" + std::to_string(i) + "]";
+      const std::string name = enum_value(fp[i], field, names);
+      if (walker::follows_foot_geometry(model, walker::model_parameter_index(model, name)))
+        throw SpecError(field, "'" + name + "' follows the foot geometry when foot.density is given (seed 001 appendix "
+                               "E); free the foot parameters or \"density\" instead");
+      job.problem.free_parameters.push_back(name);
+    }
   }
+  if (spec.contains("design_bounds")) apply_design_bounds(spec["design_bounds"], "design_bounds", job);  // (10.1)
   if (spec.contains("start")) {
     const nlohmann::json& s = spec["start"];
     const int n = walker::gait_parameter_count(model.joint_count, model.constants.bezier_degree);

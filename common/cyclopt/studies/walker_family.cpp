@@ -18,6 +18,9 @@ ParametricProblem walker_family(const walker::WalkerModel<double>& model, const 
   const int index = walker::model_parameter_index(model, parameter);  // throws with the valid names
   if (std::find(options.free_parameters.begin(), options.free_parameters.end(), parameter) != options.free_parameters.end())
     throw std::invalid_argument("parameter: \"" + parameter + "\" is optimised (free_parameters) and cannot be continued");
+  if (walker::follows_foot_geometry(model, index))
+    throw std::invalid_argument("parameter: \"" + parameter +
+                                "\" follows the foot geometry with a density (appendix E) and cannot be continued alone");
   const Eigen::VectorXd base = walker::model_parameters(model);
   return {parameter, [model, options, index, base](double value) {
             Eigen::VectorXd p = base;

@@ -7,21 +7,6 @@
 
 namespace cyclopt::walker {
 
-namespace {
-
-// Admissible range of p_mod entry `index` (segment table, foot layout, theta_F,0 in (0, 2 pi)).
-std::pair<double, double> parameter_range(const WalkerModel<double>& m, int index) {
-  if (index < segment_parameter_count) {
-    const SegmentParameterInfo& info = segment_parameter_info(index);
-    return {info.min, info.max};
-  }
-  const auto layout = foot::parameter_layout(m.foot_model);
-  const int f = index - segment_parameter_count;
-  if (f < static_cast<int>(layout.size())) return {layout[f].min, layout[f].max};
-  return {0.0, 2.0 * std::numbers::pi};
-}
-
-}  // namespace
 
 GaitProblem::GaitProblem(const WalkerModel<double>& model, GaitProblemOptions options)
     : model_(model), evaluator_(model), options_(std::move(options)), gait_count_(evaluator_.parameter_count()) {
@@ -29,19 +14,37 @@ GaitProblem::GaitProblem(const WalkerModel<double>& model, GaitProblemOptions op
   bool foot_free = false;
   for (const std::string& name : options_.free_parameters) {
     const int idx = model_parameter_index(model_, name);
+    if (follows_foot_geometry(model_, idx))
+      throw std::invalid_argument("free parameter '" + name +
+                                  "' follows the foot geometry with a density (appendix E); free the foot parameters "
+                                  "or the density instead");
     free_indices_.push_back(idx);
     const int f = idx - segment_parameter_count;
     foot_free |= f >= 0 && f < static_cast<int>(model_.foot_parameters.size());
   }
   if (foot_free) {
-    convexity_ = foot::convexity_constraints(model_.foot_model);
+    const foot::LinearInequalities convexity = foot::convexity_constraints(model_.foot_model);
+    const foot::LinearInequalities design = options_.design_bounds
+                                                ? foot::design_constraints(model_.foot_model, *options_.design_bounds)
+                                                : foot::LinearInequalities{};
+    const Eigen::Index rows = convexity.b.size() + design.b.size();
+    foot_rows_.A.resize(rows, convexity.A.cols());
+    foot_rows_.b.resize(rows);
+    foot_rows_.A.topRows(convexity.b.size()) = convexity.A;
+    foot_rows_.b.head(convexity.b.size()) = convexity.b;
+    for (const std::string& n : convexity.names) foot_rows_.names.push_back("foot convexity: " + n);
+    if (design.b.size() > 0) {
+      foot_rows_.A.bottomRows(design.b.size()) = design.A;
+      foot_rows_.b.tail(design.b.size()) = design.b;
+    }
+    for (const std::string& n : design.names) foot_rows_.names.push_back("foot design bound (10.1): " + n);
     toe_margin_ = model_.foot_model == foot::FootModel::hmt;
   }
 }
 
 int GaitProblem::num_variables() const { return gait_count_ + static_cast<int>(free_indices_.size()); }
 
-int GaitProblem::foot_constraint_count() const { return static_cast<int>(convexity_.b.size()) + (toe_margin_ ? 1 : 0); }
+int GaitProblem::foot_constraint_count() const { return static_cast<int>(foot_rows_.b.size()) + (toe_margin_ ? 1 : 0); }
 
 int GaitProblem::num_inequalities() const {
   return InequalityLayout{model_.constants.points}.size() + foot_constraint_count();
@@ -49,13 +52,13 @@ int GaitProblem::num_inequalities() const {
 
 Eigen::VectorXd GaitProblem::lower_bounds() const {
   Eigen::VectorXd l = nlp::Problem::lower_bounds();
-  for (std::size_t k = 0; k < free_indices_.size(); ++k) l(gait_count_ + k) = parameter_range(model_, free_indices_[k]).first;
+  for (std::size_t k = 0; k < free_indices_.size(); ++k) l(gait_count_ + k) = model_parameter_range(model_, free_indices_[k]).first;
   return l;
 }
 
 Eigen::VectorXd GaitProblem::upper_bounds() const {
   Eigen::VectorXd u = nlp::Problem::upper_bounds();
-  for (std::size_t k = 0; k < free_indices_.size(); ++k) u(gait_count_ + k) = parameter_range(model_, free_indices_[k]).second;
+  for (std::size_t k = 0; k < free_indices_.size(); ++k) u(gait_count_ + k) = model_parameter_range(model_, free_indices_[k]).second;
   return u;
 }
 
@@ -117,8 +120,8 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
   const foot::FootParameters<double>& fp = ev.model().foot_parameters;
   if (nf > 0) {
     // A p + b >= 0  ->  -(A p + b) <= 0 (3.21 / 3.24); toe margin > 0 likewise.
-    const int rows = static_cast<int>(convexity_.b.size());
-    out.inequalities.segment(nc, rows) = -(convexity_.A * fp + convexity_.b);
+    const int rows = static_cast<int>(foot_rows_.b.size());
+    out.inequalities.segment(nc, rows) = -(foot_rows_.A * fp + foot_rows_.b);
     if (toe_margin_) out.inequalities(nc + rows) = -foot::toe_convexity_margin(fp);
   }
   if (!with_derivatives) return nlp::EvaluationStatus::success();
@@ -127,7 +130,7 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
   out.inequality_jacobian.setZero(nc + nf, n);
   out.inequality_jacobian.topRows(nc) = e.derivatives.inequalities;
   if (nf > 0) {
-    const int rows = static_cast<int>(convexity_.b.size());
+    const int rows = static_cast<int>(foot_rows_.b.size());
     using D = ad::Dual<foot::kMaxFootParameters>;
     foot::FootParameters<D> fd(fp.size());
     for (int i = 0; i < fp.size(); ++i) fd(i) = D::variable(fp(i), i);
@@ -135,10 +138,15 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
     for (std::size_t k = 0; k < free_indices_.size(); ++k) {
       const int f = free_indices_[k] - foot_offset;
       if (f < 0 || f >= fp.size()) continue;
-      out.inequality_jacobian.block(nc, gait_count_ + k, rows, 1) = -convexity_.A.col(f);
+      out.inequality_jacobian.block(nc, gait_count_ + k, rows, 1) = -foot_rows_.A.col(f);
       if (toe_margin_) out.inequality_jacobian(nc + rows, gait_count_ + k) = -toe.d(f);
     }
   }
+  // Degenerate feet (an edge of the generating polygon at the ankle vanishing with the whole sole
+  // on the ankle's level, section 10.2's stilt) can leave the gait real but its derivatives 0/0:
+  // flagged like a gait without a real solution, never passed on as NaN.
+  if (!(out.gradient.allFinite() && out.equality_jacobian.allFinite() && out.inequality_jacobian.allFinite()))
+    return nlp::EvaluationStatus::failure("non-finite derivatives of the gait at this foot (degenerate geometry)");
   return nlp::EvaluationStatus::success();
 }
 
@@ -161,7 +169,7 @@ std::string GaitProblem::constraint_name(bool equality, int i) const {
   const InequalityLayout L{model_.constants.points};
   if (i >= L.size()) {
     const int r = i - L.size();
-    if (r < static_cast<int>(convexity_.names.size())) return "foot convexity: " + convexity_.names[r];
+    if (r < static_cast<int>(foot_rows_.names.size())) return foot_rows_.names[r];
     return "foot convexity: HMT toe margin > 0";
   }
   if (i < L.normal_force()) return "impulse (5.104a-b)[" + std::to_string(i) + "]";

@@ -6,13 +6,16 @@
 // where x = alpha_tilde are the gait parameters (5.92) and p_free an optional, named subset of the
 // model parameters p_mod (5.91) optimised together with the gait (foot-geometry co-optimisation,
 // section 10.2). Free foot parameters add the convexity conditions (3.21 / 3.24, and the HMT toe
-// margin) as inequalities and their admissible ranges as bounds. A gait without a real periodic
+// margin) as inequalities and their admissible ranges as bounds; with design_bounds also the
+// dimension bounds of eq. (10.1). A gait without a real periodic
 // solution (5.87) is an evaluation failure, which every solver treats as "step too long".
 
 #include "cyclopt/foot/convexity_constraints.hpp"
+#include "cyclopt/foot/design_bounds.hpp"
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +26,7 @@ struct GaitProblemOptions {
   double speed = 1.3;                          // v_bar (m/s)
   Quadrature quadrature = Quadrature::trapezoid;
   std::vector<std::string> free_parameters;    // names from model_parameter_names(), e.g. {"l_HM", "k_HM"}
+  std::optional<foot::DesignBounds> design_bounds = std::nullopt;  // eq. (10.1) rows, with free foot parameters
 };
 
 class GaitProblem : public nlp::Problem {
@@ -58,7 +62,7 @@ class GaitProblem : public nlp::Problem {
   int gait_count_ = 0;
   std::vector<int> free_indices_;       // into p_mod
   std::vector<std::string> parameter_names_;
-  foot::LinearInequalities convexity_;  // rows restricted to problems with free foot parameters
+  foot::LinearInequalities foot_rows_;  // (3.21 / 3.24) and (10.1), only with free foot parameters
   bool toe_margin_ = false;
 };
 

@@ -15,6 +15,7 @@
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/foot/foot_profile.hpp"
 #include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/walker/foot_density.hpp"
 #include "cyclopt/walker/segment_parameters.hpp"
 
 #include <Eigen/Core>
@@ -51,6 +52,7 @@ struct WalkerModel {
   foot::FootParameters<T> foot_parameters;  // p_HM / p_HMT (empty for point feet)
   foot::FootProfile<T> foot;          // F of eq. 3.19 / 3.22, evaluated at theta_F - theta_F,0 (5.4)
   T foot_zero_angle = T(kFootZeroAngle);  // theta_F,0
+  FootDensity<T> foot_density;        // with rho: m_F, r_F, J_F, theta_F,0 follow the geometry (10.2)
   SegmentParameters<T> segments{};    // p_mech
   WalkingConstants constants;
 
@@ -71,13 +73,16 @@ struct WalkerModel {
 };
 
 // Builds the model; segment parameters, foot and theta_F,0 are taken as given (validated by the
-// scene spec). The point-foot model ignores r_F, m_F, J_F and theta_F,0.
+// scene spec), except that with a density m_F, r_F, J_F (and theta_F,0 unless fixed) are replaced
+// by the foot's mass properties (appendix E). The point-foot model ignores r_F, m_F, J_F and theta_F,0.
 template <class T>
 WalkerModel<T> make_walker_model(const SegmentParameters<T>& p, foot::FootModel model,
                                  const foot::FootParameters<T>& foot_parameters, const T& foot_zero_angle,
-                                 const WalkingConstants& constants = {}, int periodic_terms = 0);
+                                 const WalkingConstants& constants = {}, int periodic_terms = 0,
+                                 const FootDensity<T>& density = {});
 
-// The seed's reference scenes: Table 5.1 with a foot spec, Table D.1 with point feet.
+// The seed's reference scenes: Table 5.1 with a foot spec, Table D.1 with point feet. A foot spec
+// with a density couples the foot's mass properties to its geometry (section 10.2).
 WalkerModel<double> make_walker_model(const foot::FootSpec& foot, const WalkingConstants& constants = {});
 
 // Converts a double model to scalar type T (constants: zero derivative parts).

@@ -20,15 +20,19 @@ inline constexpr double kSegmentAngles[kMaxSegments][kMaxCoordinates] = {
 }  // namespace detail
 
 template <class T>
-WalkerModel<T> make_walker_model(const SegmentParameters<T>& p, foot::FootModel model,
+WalkerModel<T> make_walker_model(const SegmentParameters<T>& segments, foot::FootModel model,
                                  const foot::FootParameters<T>& foot_parameters, const T& foot_zero_angle,
-                                 const WalkingConstants& constants, int periodic_terms) {
+                                 const WalkingConstants& constants, int periodic_terms,
+                                 const FootDensity<T>& density) {
   WalkerModel<T> m;
   m.foot_model = model;
   m.foot_parameters = foot_parameters;
   m.foot = foot::make_profile<T>(model, foot_parameters, periodic_terms);
   m.foot_zero_angle = foot_zero_angle;
-  m.segments = p;
+  m.foot_density = density;
+  m.segments = segments;
+  apply_foot_density(density, m.foot, m.segments, m.foot_zero_angle);
+  const SegmentParameters<T>& p = m.segments;  // with a density: the coupled values
   m.constants = constants;
   const bool feet = model != foot::FootModel::point;
   m.segment_count = feet ? 7 : 5;
@@ -102,8 +106,11 @@ template <class T>
 WalkerModel<T> cast_model(const WalkerModel<double>& d) {
   SegmentParameters<T> p;
   for (int i = 0; i < segment_parameter_count; ++i) p[i] = T(d.segments[i]);
+  FootDensity<T> density;
+  if (d.foot_density.rho) density.rho = T(*d.foot_density.rho);
+  density.zero_angle_from_geometry = d.foot_density.zero_angle_from_geometry;
   return make_walker_model<T>(p, d.foot_model, d.foot_parameters.template cast<T>(), T(d.foot_zero_angle), d.constants,
-                              d.foot.periodic_terms);
+                              d.foot.periodic_terms, density);
 }
 
 }  // namespace cyclopt::walker
