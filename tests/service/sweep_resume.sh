@@ -46,7 +46,7 @@ echo "== uninterrupted sweep (database A)"
 A=$WORK/a.db
 T0=$(date +%s.%N)
 start_server "$A"
-"$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id whole --watch >/dev/null || fail "uninterrupted sweep failed"
+"$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id whole --watch >/dev/null 2>"$WORK/watch-a.txt" || fail "uninterrupted sweep failed"
 T1=$(date +%s.%N)
 kill -TERM "$SERVER"; wait "$SERVER" || true; SERVER=""
 echo "done in $(echo "$T0 $T1" | awk '{printf "%.1f", $2 - $1}') s: $(sql "$A" "SELECT count(*) FROM solutions") rows, $(sql "$A" "SELECT count(*) FROM checkpoints") checkpoints"
@@ -68,7 +68,7 @@ for k in 1 2 3; do
   start_server "$B"
   [ "$STATE" = running ] || fail "the job had finished before kill $k: choose a longer sweep (STARTS)"
 done
-"$CYCLOPT" watch 1 --watch-timeout 600 >/dev/null || fail "resumed sweep did not finish: $(sql "$B" "SELECT state, error FROM jobs")"
+"$CYCLOPT" watch 1 --watch-timeout 600 >/dev/null 2>"$WORK/watch-b.txt" || fail "resumed sweep did not finish: $(sql "$B" "SELECT state, error FROM jobs")"
 kill -TERM "$SERVER"; wait "$SERVER" || true; SERVER=""
 CP=$(sql "$B" "SELECT count(*) FROM checkpoints") R=$(sql "$B" "SELECT count(*) FROM solutions")
 echo "final attempt: computed and recorded $((CP - PREV_CP)) solves/runs, stored $((R - PREV_ROWS)) rows"
