@@ -26,7 +26,7 @@ struct AnkleTrackOptions {
   std::optional<std::pair<double, double>> interval;
   std::string force_column = "Fz";  // used when the trial has this analog column
   double force_threshold = 20.0;    // N
-  double max_rolling_speed = 1.0;   // m/s
+  double max_rolling_speed = 2.0;   // m/s
   int min_samples = 10;             // a rolling phase with fewer samples is an error
 };
 

@@ -80,10 +80,15 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
     const double floor = 1e-12 * std::max(largest, 1e-300);
     const Eigen::VectorXd dl = nb.a.cwiseMax(floor), dg = nb.C.diagonal().cwiseMax(floor);
     if (lambda < 0.0) lambda = o.initial_damping;
-    bool accepted = false;
-    while (!accepted) {
+    // The step of the damped normal equations at `lam` (projected onto the bounds when
+    // `project`) and the decrease the Gauss-Newton model predicts for it: -(g^T d + 1/2 |J d|^2).
+    struct Step {
+      Eigen::VectorXd global, local;
+      double predicted;
+    };
+    auto step_at = [&](double lam, bool project) {
       Eigen::VectorXd rhs;
-      const Eigen::MatrixXd S = schur(nb, dl, dg, lambda, &rhs);
+      const Eigen::MatrixXd S = schur(nb, dl, dg, lam, &rhs);
       std::vector<Eigen::Index> idx;
       for (Eigen::Index i = 0; i < G; ++i)
         if (free[i]) idx.push_back(i);
@@ -94,37 +99,48 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
         rf[a] = rhs[idx[a]];
         for (Eigen::Index b = 0; b < F; ++b) Sf(a, b) = S(idx[a], idx[b]);
       }
-      Eigen::VectorXd dg_step = Eigen::VectorXd::Zero(G);
-      const Eigen::LDLT<Eigen::MatrixXd> ldlt(Sf);
-      const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(ldlt.solve(rf)) : Eigen::VectorXd();
-      for (Eigen::Index a = 0; a < F; ++a) dg_step[idx[a]] = xf[a];
-      Eigen::VectorXd new_global = (global + dg_step).cwiseMax(lower).cwiseMin(upper);
-      dg_step = new_global - global;
-      Eigen::VectorXd dl_step(N);
+      Step st{Eigen::VectorXd::Zero(G), Eigen::VectorXd(N), 0.0};
+      const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(Eigen::LDLT<Eigen::MatrixXd>(Sf).solve(rf)) : Eigen::VectorXd();
+      for (Eigen::Index a = 0; a < F; ++a) st.global[idx[a]] = xf[a];
+      if (project) st.global = (global + st.global).cwiseMax(lower).cwiseMin(upper) - global;
       for (Eigen::Index j = 0; j < N; ++j)
-        dl_step[j] = -(nb.local_gradient[j] + nb.B.row(j).dot(dg_step)) / (nb.a[j] + lambda * dl[j]);
-      const Eigen::VectorXd new_local = local + dl_step;
-      // Gauss-Newton model decrease of the (projected) step: -(g^T d + 1/2 |J d|^2).
+        st.local[j] = -(nb.local_gradient[j] + nb.B.row(j).dot(st.global)) / (nb.a[j] + lam * dl[j]);
       double jd2 = 0.0;
       for (Eigen::Index j = 0; j < N; ++j)
-        jd2 += (ev.local_jacobian.col(j) * dl_step[j] + ev.global_jacobian.middleRows(2 * j, 2) * dg_step).squaredNorm();
-      const double predicted = -(nb.global_gradient.dot(dg_step) + nb.local_gradient.dot(dl_step) + 0.5 * jd2);
-      const bool valid = dl_step.allFinite() && dg_step.allFinite();
+        jd2 += (ev.local_jacobian.col(j) * st.local[j] + ev.global_jacobian.middleRows(2 * j, 2) * st.global).squaredNorm();
+      st.predicted = -(nb.global_gradient.dot(st.global) + nb.local_gradient.dot(st.local) + 0.5 * jd2);
+      return st;
+    };
+    // Stationarity: the unprojected Gauss-Newton step in the free unknowns, 1/2 g^T (J^T J)^-1 g,
+    // promises almost nothing (projection could only lower a decrease that is already tiny).
+    const Step gauss_newton = step_at(1e-12, false);
+    if (gauss_newton.global.allFinite() && gauss_newton.local.allFinite() &&
+        gauss_newton.predicted >= 0.0 && gauss_newton.predicted <= o.function_tolerance * s.cost) {
+      s.converged = true;
+      s.message = "Gauss-Newton predicted decrease below function_tolerance * cost";
+      break;
+    }
+    bool accepted = false;
+    while (!accepted) {
+      const Step st = step_at(lambda, true);
+      const Eigen::VectorXd new_global = global + st.global, new_local = local + st.local;
+      const bool valid = st.local.allFinite() && st.global.allFinite();
       ++s.evaluations;
       if (valid && residual(new_global, new_local, true, trial) && 0.5 * trial.r.squaredNorm() < s.cost) {
         const double new_cost = 0.5 * trial.r.squaredNorm();
-        const double step = std::max(dg_step.lpNorm<Eigen::Infinity>(), N ? dl_step.lpNorm<Eigen::Infinity>() : 0.0);
+        const double step = std::max(st.global.lpNorm<Eigen::Infinity>(), N ? st.local.lpNorm<Eigen::Infinity>() : 0.0);
         const double size = std::max(global.lpNorm<Eigen::Infinity>(), N ? local.lpNorm<Eigen::Infinity>() : 0.0);
-        const double rho = predicted > 0.0 ? (s.cost - new_cost) / predicted : 0.0;
+        const double rho = st.predicted > 0.0 ? (s.cost - new_cost) / st.predicted : 0.0;
         global = new_global;
         local = new_local;
         std::swap(ev, trial);
+        const double old_cost = s.cost;
         s.cost = new_cost;
         lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
         accepted = true;
-        if (predicted <= o.function_tolerance * s.cost) {
-          s.converged = true;
-          s.message = "predicted decrease below function_tolerance * cost";
+        if (old_cost - new_cost <= o.function_tolerance * new_cost && st.predicted <= o.function_tolerance * new_cost) {
+          s.converged = true;  // MINPACK's ftol test: neither the step nor its model gains more
+          s.message = "relative decrease below function_tolerance";
         } else if (step <= o.step_tolerance * (1.0 + size)) {
           s.converged = true;
           s.message = "step below step_tolerance";

@@ -31,7 +31,7 @@ using ArrowResidual = std::function<bool(const Eigen::VectorXd& global, const Ei
 
 struct ArrowOptions {
   int max_iterations = 200;
-  double function_tolerance = 1e-12;  // converged when the predicted decrease < this * cost
+  double function_tolerance = 1e-10;  // converged when the undamped Gauss-Newton step promises < this * cost
   double step_tolerance = 1e-12;      // ... or the scaled step < this
   double zero_cost = 1e-28;           // ... or 1/2 |r|^2 below this (exact data)
   double initial_damping = 1e-4;      // relative to the diagonal of J^T J

@@ -6,6 +6,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,8 @@ namespace {
 
 constexpr double kSharp = 1e-8;  // rad: the fixed k_H, k_M, k_T of (4.13) / (4.18)
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kCollapsedK = 1e-4;  // rad: a fitted k below this gets one restart
+constexpr double kRestartK = 0.05;    // rad: from there (the middle of the seed's fitted k_HM)
 using D = ad::Dual<foot::kMaxFootParameters>;
 
 int parameter_count(foot::FootModel m) { return m == foot::FootModel::hm ? int{foot::hm::count} : int{foot::hmt::count}; }
@@ -58,7 +61,25 @@ FootFitResult run_fit(foot::FootModel model, const std::vector<AnkleTrack>& trac
     upper[P + k] = kInf;
     local.segment(j0, tracks[k].samples()) = theta0[k];
   }
-  const ArrowSummary s = solve_arrow_least_squares(rolling_ankle_residual(model, tracks), global, local, lower, upper, options);
+  const ArrowResidual residual = rolling_ankle_residual(model, tracks);
+  ArrowSummary s = solve_arrow_least_squares(residual, global, local, lower, upper, options);
+  // A free regularisation that collapsed towards 0 sits on a plateau: with tanh(a/k) and k far
+  // below the spacing of the fitted angles no sample sees the transition, so the gradient in k
+  // vanishes without the fit being good. Restart once from k = kRestartK and keep the better.
+  for (int i = 0; i < P; ++i) {
+    const bool regularisation = foot::parameter_layout(model)[i].name.rfind("k_", 0) == 0;
+    if (!regularisation || lower[i] == upper[i] || global[i] > kCollapsedK) continue;
+    Eigen::VectorXd g2 = global, l2 = local;
+    g2[i] = std::clamp(kRestartK, lower[i], upper[i]);
+    ArrowSummary s2 = solve_arrow_least_squares(residual, g2, l2, lower, upper, options);
+    s2.iterations += s.iterations;
+    s2.evaluations += s.evaluations;
+    if (s2.cost < s.cost) {
+      global = g2;
+      local = l2;
+      s = s2;
+    }
+  }
 
   FootFitResult r;
   r.model = model;

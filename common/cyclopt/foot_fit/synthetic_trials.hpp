@@ -30,7 +30,7 @@ struct SyntheticTrialOptions {
   double lateral = 0.0;             // m, sideways position of the ankle
   double malleolus_spacing = 0.07;  // m between the two malleolus markers (mean = ankle, eq. 4.1)
   double swing_time = 0.0;          // s of swing before heel strike and after toe-off
-  double swing_speed = 3.0;         // m/s of the ankle while swinging
+  double swing_speed = 4.0;         // m/s of the ankle while swinging
   double body_force = 700.0;        // N in the "Fz" column while the foot rolls, 0 otherwise
   int vertical_axis = 2;            // file axis that points up
   std::vector<std::string> markers = {"LMAL", "MMAL"};  // lateral, medial
