@@ -161,6 +161,15 @@ FitBounds seed_bounds(foot::FootModel model, double z_min) {
   return b;
 }
 
+FitBounds widened_to_contain(FitBounds b, const foot::FootParameters<double>& p) {
+  for (Eigen::Index i = 0; i < p.size(); ++i)
+    if (p[i] > b.upper[i] || p[i] < b.lower[i]) {
+      b.upper[i] = std::max(b.upper[i], 2.0 * p[i]);
+      b.lower[i] = std::min(b.lower[i], 0.5 * p[i]);
+    }
+  return b;
+}
+
 ArrowResidual rolling_ankle_residual(foot::FootModel model, const std::vector<AnkleTrack>& tracks) {
   const int P = parameter_count(model), K = static_cast<int>(tracks.size());
   int N = 0;
@@ -227,7 +236,27 @@ FootFitResult fit_hmt(const std::vector<AnkleTrack>& tracks, const FootFitResult
   p[T::k_MT] = hm.parameters[H::k_HM];
   p[T::k_T] = hm.parameters[H::k_M];
   const FitBounds b = o.hmt_bounds ? *o.hmt_bounds : seed_bounds(foot::FootModel::hmt, z_min);
-  return run_fit(foot::FootModel::hmt, tracks, p, hm.theta, hm.x_off, b, o.solver);
+  // HMT contains HM: with l_MT = 0 the T transition is HM's M transition (eq. 3.23d -> 3.20c).
+  // Besides the seed's start, two from the HM solution so embedded: a short toe (l_MT = l_HM/100,
+  // taken from the sole, so toe angle and rounding are not degenerate) and l_MT = 0 exactly (the
+  // HM residual itself: as the solver accepts only decreasing steps, the best of the three is
+  // never worse than the HM fit). The seed notes (Fig. 4.5) that the HMT fit depends on its start.
+  std::vector<foot::FootParameters<double>> starts{p, p, p};
+  starts[1][T::l_MT] = hm.parameters[H::l_HM] / 100.0;
+  starts[1][T::l_HM] = hm.parameters[H::l_HM] - starts[1][T::l_MT];
+  starts[2][T::l_MT] = 0.0;
+  FootFitResult best;
+  double seconds = 0.0;
+  int iterations = 0;
+  for (const foot::FootParameters<double>& start : starts) {
+    FootFitResult r = run_fit(foot::FootModel::hmt, tracks, start.cwiseMax(b.lower).cwiseMin(b.upper), hm.theta, hm.x_off, b, o.solver);
+    seconds += r.seconds;
+    iterations += r.iterations;
+    if (iterations == r.iterations || r.rms < best.rms) best = std::move(r);
+  }
+  best.seconds = seconds;
+  best.iterations = iterations;
+  return best;
 }
 
 RollingFootFit fit_rolling_foot(const std::vector<AnkleTrack>& tracks, const FootFitOptions& o) {

@@ -25,6 +25,10 @@ struct FitBounds {
 // regularisation tanh(a/k) needs k > 0.
 FitBounds seed_bounds(foot::FootModel model, double z_min);
 
+// `bounds` widened, parameter by parameter, to [min(lower, p/2), max(upper, 2p)] where p lies
+// outside: for refitting a known foot (synthetic ground truth) that the seed's box excludes.
+FitBounds widened_to_contain(FitBounds bounds, const foot::FootParameters<double>& p);
+
 // The residual function of eq. (4.16) / (4.21) for the arrow solver: globals = [p (layout
 // order), x_off,1..K], locals = all theta_F,k,j trial by trial. Exact Jacobian: derivatives by
 // p through Dual<9> on the foot library, by theta from F' and F''.
@@ -80,7 +84,9 @@ struct FootFitOptions {
 
 // The HM fit (4.16) from the circle-fit start (k_HM = 0.1, section 4.2).
 FootFitResult fit_hm(const std::vector<AnkleTrack>& tracks, const CircleFitStart& start, const FootFitOptions& options = {});
-// The HMT fit (4.21) from an HM result: k_MT = k_HM, l_MT = l_HM / 10, gamma_F = pi / 6.
+// The HMT fit (4.21) from an HM result: the seed's start (k_MT = k_HM, l_MT = l_HM / 10, gamma_F = pi / 6)
+// and two starts from the HM solution embedded in HMT; the best is kept, never worse than `hm`.
+// seconds and iterations are summed over the three solves.
 FootFitResult fit_hmt(const std::vector<AnkleTrack>& tracks, const FootFitResult& hm, double z_min,
                       const FootFitOptions& options = {});
 
