@@ -300,9 +300,12 @@ void validate_locally(const std::string& spec_json) {
     cyclopt::service::validate_job_spec(spec, cyclopt::service::builtin_job_kinds());
   } catch (const cyclopt::service::SpecError& e) {
     std::string hint;
-    if (e.field() == "foot" && spec.contains("foot") && spec["foot"].is_string()) {
+    if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {
       std::vector<std::string> presets;
-      for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) presets.push_back(std::string(p.name));
+      for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) {
+        presets.push_back(p.name);
+        if (!p.alias.empty()) presets.push_back(p.alias);
+      }
       hint = cli::did_you_mean(spec["foot"].get<std::string>(), presets);
     }
     throw LocalRejection("rejected before sending (field " + e.field() + "): " + e.what() + hint);

@@ -4,6 +4,7 @@
 #include "cyclopt/cli/exit_codes.hpp"
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
+#include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/foot/foot_report.hpp"
@@ -17,18 +18,23 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace {
 
 constexpr const char* kUsage = R"(usage: cyclopt-foot [--preset NAME | --foot FILE.json] [--density RHO] [--samples N] [--json]
-       cyclopt-foot --list-presets
+       cyclopt-foot --list-presets [--subject P1..P9] [--footwear barefoot|shoes] [--side left|right]
+                    [--model HM|HMT] [--trajectory SG|AK|IK] [--table 4.2|B.1..B.11] [--section-9-2]
 
 Describes a foot geometry of the walker: polygon transitions, admissible foot angles, mass
 properties from an area density (appendix E of the seed) and the ankle / contact-point kinematics
 while the foot rolls. Units are SI (m, rad, kg, kg/m^2).
 
-  --preset NAME   one of the seed's fitted feet (see --list-presets); default P2-shoes-left-HMT
+  --preset NAME   point or one of the seed's 216 fitted feet, SUBJECT-FOOTWEAR-SIDE-MODEL-TRAJECTORY
+                  (e.g. P3-shoes-left-HM-SG; Table 4.2, B.1-B.11); default P2-shoes-left-HMT
+  --list-presets  name, alias and source of every preset; the filters keep the fitted feet that
+                  match all of them (--section-9-2: the 16 feet compared in section 9.2)
   --foot FILE     a JSON foot spec (schema: proto/schemas/foot.schema.json)
   --density RHO   area density in kg/m^2 for mass properties (default for presets: 36.9)
   --samples N     rolling-kinematics samples over the admissible range (2..100000, default 13)
@@ -46,7 +52,10 @@ int usage_error(const std::string& message) {
 // The preset of that name; an unknown one is rejected with the known names and the nearest.
 const cyclopt::foot::FootPreset& preset_named(const std::string& name) {
   std::vector<std::string> names;
-  for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) names.push_back(std::string(p.name));
+  for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) {
+    names.push_back(p.name);
+    if (!p.alias.empty()) names.push_back(p.alias);
+  }
   if (std::find(names.begin(), names.end(), name) == names.end() && cyclopt::cli::closest_name(name, names))
     throw std::invalid_argument("--preset: unknown foot '" + name + "'" + cyclopt::cli::did_you_mean(name, names) +
                                 "; cyclopt-foot --list-presets lists them");
@@ -74,6 +83,20 @@ void print_table(const nlohmann::json& r) {
                 s["contact_z_from_ankle"].get<double>(), s["curvature_radius"].get<double>());
 }
 
+// One line per preset: name, alias, source; a fitted foot flagged in the catalogue shows its reason.
+int list_presets(const cyclopt::foot::FittedFootFilter& filter, bool filtered) {
+  using namespace cyclopt::foot;
+  int shown = 0;
+  for (const FootPreset& p : foot_presets()) {
+    if (filtered && (!p.fitted || !matches(*p.fitted, filter))) continue;
+    std::printf("%-24s %-20s %s%s\n", p.name.c_str(), p.alias.empty() ? "-" : p.alias.c_str(), p.source.c_str(),
+                p.fitted && !p.fitted->flag.empty() ? ("; FLAGGED: " + p.fitted->flag).c_str() : "");
+    ++shown;
+  }
+  std::fprintf(stderr, "cyclopt-foot: %d of %zu presets\n", shown, foot_presets().size());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,8 +105,10 @@ int main(int argc, char** argv) {
   std::optional<double> density;
   FootReportOptions options;
   options.samples = 13;
-  bool json = false;
+  bool json = false, list = false;
   std::string plot_dir;
+  FittedFootFilter filter;
+  bool filtered = false;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -99,8 +124,18 @@ int main(int argc, char** argv) {
         std::printf("%s\n", cyclopt::cli::version_text("cyclopt-foot").c_str());
         return 0;
       } else if (a == "--list-presets") {
-        for (const FootPreset& p : foot_presets()) std::printf("%-22s %s\n", std::string(p.name).c_str(), std::string(p.source).c_str());
-        return 0;
+        list = true;
+      } else if (std::optional<std::string>* field = a == "--subject"      ? &filter.subject
+                                                     : a == "--footwear"   ? &filter.footwear
+                                                     : a == "--side"       ? &filter.side
+                                                     : a == "--model"      ? &filter.model
+                                                     : a == "--trajectory" ? &filter.trajectory
+                                                     : a == "--table"      ? &filter.table
+                                                                           : nullptr) {
+        *field = next();
+        filtered = true;
+      } else if (a == "--section-9-2") {
+        filter.section_9_2_only = filtered = true;
       } else if (a == "--preset") {
         preset = next();
       } else if (a == "--foot") {
@@ -118,6 +153,13 @@ int main(int argc, char** argv) {
         return usage_error("unknown argument '" + a + "'");
       }
     }
+    if (filtered && !list) throw std::invalid_argument("the filters --subject ... --section-9-2 need --list-presets");
+    if (list) {
+      validate(filter);
+      return list_presets(filter, filtered);
+    }
+  } catch (const SpecError& e) {
+    return usage_error("--" + std::string(e.what()));
   } catch (const std::exception& e) {
     return usage_error(e.what());
   }

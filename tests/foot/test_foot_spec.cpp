@@ -44,7 +44,7 @@ TEST(FootSpec, RejectsBadInputNamingFieldAndRange) {
   expect_rejected(json{{"model", "XYZ"}}, "foot.model", "\"HMT\"");
   json j = p1_hm();
   j["k_HM"] = 0.0;
-  expect_rejected(j, "foot.k_HM", "[1e-10, 1] rad");
+  expect_rejected(j, "foot.k_HM", "[1e-12, 1] rad");
   j = p1_hm();
   j["h_F"] = "0.1";
   expect_rejected(j, "foot.h_F", "must be a number in [0, 0.5] m");

@@ -10,11 +10,12 @@
 namespace cyclopt::foot {
 namespace {
 
-// Ranges a specification may use. Lengths: a human or robot foot (the seed's fits are 7-300 mm;
-// §10.2 optimises up to l_HM = 400 mm). k: eq. (3.7) needs k > 0; below 1e-10 the transition is
-// narrower than double resolution of theta resolves well, above 1 the "polygon" is no longer
-// recognisable (the seed bounds k by 0.5 in §10.2).
-constexpr double kKMin = 1e-10;
+// Ranges a specification may use. Lengths: a human or robot foot (the seed's fits are 7-450 mm;
+// §10.2 optimises up to l_HM = 400 mm). k: eq. (3.7) needs k > 0; the seed's own fits go down to
+// 1.4e-11 (Table B.7, P5 right, k_HM), a transition still about 6e4 double ulps wide at an
+// angle of order one; above 1 the "polygon" is no longer recognisable (the seed bounds k by 0.5
+// in §10.2).
+constexpr double kKMin = 1e-12;
 constexpr double kKMax = 1.0;
 
 constexpr std::array<ParameterInfo, hm::count> kHmLayout{{

@@ -1,53 +1,46 @@
 #include "cyclopt/foot/foot_presets.hpp"
 
-#include <numbers>
-#include <string>
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace cyclopt::foot {
 namespace {
 
-constexpr double mm = 1e-3;
-constexpr double deg = std::numbers::pi / 180.0;
+// The preset names used before the catalogue existed (all fitted to the SG trajectory).
+constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kAliases{{
+    {"P2-shoes-left-HMT", "P2-shoes-left-HMT-SG"},
+    {"P1-barefoot-left-HM", "P1-barefoot-left-HM-SG"},
+    {"P1-shoes-left-HMT", "P1-shoes-left-HMT-SG"},
+}};
 
-FootSpec hm_spec(double k_h, double k_m, double k_hm, double h_f, double l_ha, double l_hm, std::string name) {
-  FootSpec s;
-  s.model = FootModel::hm;
-  s.parameters.resize(hm::count);
-  s.parameters << h_f * mm, l_ha * mm, l_hm * mm, k_h, k_hm, k_m;
-  s.name = std::move(name);
-  return s;
+FootPreset point_preset() {
+  FootPreset p;
+  p.name = "point";
+  p.source = "seed 001 Table D.1 (point feet)";
+  p.spec.model = FootModel::point;
+  p.spec.parameters.resize(0);
+  p.spec.name = "point foot";
+  return p;
 }
 
-// Argument order follows the columns of Tables B.7-B.10.
-FootSpec hmt_spec(double k_h, double k_t, double k_hm, double k_mt, double h_f, double l_ha, double l_hm, double l_mt,
-                  double gamma_deg, std::string name) {
-  FootSpec s;
-  s.model = FootModel::hmt;
-  s.parameters.resize(hmt::count);
-  s.parameters << h_f * mm, l_ha * mm, l_hm * mm, l_mt * mm, gamma_deg * deg, k_h, k_hm, k_mt, k_t;
-  s.name = std::move(name);
-  return s;
-}
-
-FootSpec point_spec() {
-  FootSpec s;
-  s.model = FootModel::point;
-  s.parameters.resize(0);
-  s.name = "point foot";
-  return s;
+std::vector<FootPreset> build_presets() {
+  std::vector<FootPreset> all{point_preset()};
+  for (const FittedFoot& f : fitted_feet()) {
+    FootPreset p;
+    p.name = f.name();
+    p.source = f.source();
+    p.spec = f.spec;
+    p.fitted = &f;
+    for (const auto& [alias, target] : kAliases)
+      if (target == p.name) p.alias = alias;
+    all.push_back(std::move(p));
+  }
+  return all;
 }
 
 const std::vector<FootPreset>& presets() {
-  static const std::vector<FootPreset> all = {
-      {"P2-shoes-left-HMT", "seed 001 Table B.9 (P2, left, with shoes); best foot of section 9.2.3",
-       hmt_spec(1e-8, 1e-8, 5.4e-2, 1.0e-1, 106.5, 76.5, 248.6, 112.4, 44.0, "P2 shoes left (HMT)")},
-      {"P1-barefoot-left-HM", "seed 001 Table 4.2 (P1, left, barefoot); the chapter-8 experiments",
-       hm_spec(1e-8, 1e-8, 5.2e-2, 88.5, 52.3, 226.6, "P1 barefoot left (HM)")},
-      {"P1-shoes-left-HMT", "seed 001 Table B.9 (P1, left, with shoes)",
-       hmt_spec(1e-8, 1e-8, 9.9e-2, 1.8e-2, 102.7, 94.8, 282.6, 58.9, 32.2, "P1 shoes left (HMT)")},
-      {"point", "seed 001 Table D.1 (point feet)", point_spec()},
-  };
+  static const std::vector<FootPreset> all = build_presets();
   return all;
 }
 
@@ -57,10 +50,14 @@ std::span<const FootPreset> foot_presets() { return presets(); }
 
 const FootPreset& foot_preset(std::string_view name) {
   for (const FootPreset& p : presets())
-    if (p.name == name) return p;
-  std::string known;
-  for (const FootPreset& p : presets()) known += (known.empty() ? "" : ", ") + std::string(p.name);
-  throw SpecError("preset", "unknown foot preset '" + std::string(name) + "'; known: " + known);
+    if (p.name == name || (!p.alias.empty() && p.alias == name)) return p;
+  std::string aliases;
+  for (const auto& [alias, target] : kAliases) aliases += ", " + std::string(alias);
+  throw SpecError("preset", "unknown foot preset '" + std::string(name) +
+                                "'; known: point and the seed's fitted feet SUBJECT-FOOTWEAR-SIDE-MODEL-TRAJECTORY "
+                                "(SUBJECT P1-P9, FOOTWEAR barefoot|shoes, SIDE left|right, MODEL HM|HMT, "
+                                "TRAJECTORY SG|AK|IK, e.g. P3-shoes-left-HM-SG; cyclopt-foot --list-presets), "
+                                "aliases" + aliases.substr(1));
 }
 
 }  // namespace cyclopt::foot
