@@ -8,6 +8,7 @@
 #include "cyclopt/storage/sqlite_handle.hpp"
 
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -90,6 +91,8 @@ class ResultStore {
   std::set<PointKey> stored_points(std::int64_t job_id);
   // The stored points with required = 1 (solution_point.hpp), by curve and point index.
   std::vector<RequiredPoint> required_points(std::int64_t job_id);
+  void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces
+  std::map<std::string, std::string> checkpoints(std::int64_t job_id);
   void add_event(std::int64_t job_id, const std::string& kind, const std::string& message);
 
   // Reads.
