@@ -44,8 +44,10 @@ results database file directly (read-only) when given --db FILE.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
   status JOB         one job's state, counts and timings
   list [--state S]   jobs (S: queued, running, done, failed, cancelled)
-  query JOB [--what solutions|events|curves|trajectories]
-                     a job's solved points (default) as a table
+  query JOB [--what solutions|events|curves|trajectories] [--wide | --csv | --json]
+                     a job's solved points (default): for walker jobs one line per point
+                     (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
+                     loss, status, curve); --wide / --csv every scalar, --json everything
   export JOB [--out FILE]
                      everything about a job as JSON: spec, events, curves, points, trajectories
   cancel JOB         cancel a queued or running job
@@ -60,7 +62,7 @@ results database file directly (read-only) when given --db FILE.
                      one self-contained HTML page: spec, solved points, all figures
                      (default FILE: jobJOB.html)
 
-Output of status, list, query: aligned table, or --json / --csv.
+Output of status, list, query: aligned table (times in ISO 8601 UTC), or --wide / --csv / --json.
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
 --key-file FILE (sign requests and believe only answers signed with this key; default
 $CYCLOPT_KEY_FILE; README, Authentication), --version.
@@ -111,7 +113,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
     "--values", "--speeds", "--task", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
-    "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--help", "--version"};
+    "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
   Options o;
@@ -152,6 +154,7 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--watch") o.watch = true;
     else if (a == "--json") o.format = cyclopt::client::RowFormat::json;
     else if (a == "--csv") o.format = cyclopt::client::RowFormat::csv;
+    else if (a == "--wide") o.format = cyclopt::client::RowFormat::wide;
     else if (a.rfind("--", 0) == 0) throw UsageError("unknown option " + a + cli::did_you_mean(a, kOptionNames));
     else if (o.command.empty()) o.command = a;
     else o.positional.push_back(a);
