@@ -7,6 +7,7 @@
 #include "cyclopt/giant_swing/task_spec.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/svg_ids.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace cyclopt::plot {
@@ -42,6 +44,34 @@ std::string svg_colour(const Color& c) {
   char b[96];
   std::snprintf(b, sizeof b, "rgb(%g%%,%g%%,%g%%)", c.r * 100, c.g * 100, c.b * 100);
   return b;
+}
+
+// The inline <svg>...</svg> elements of an HTML page, in order.
+std::vector<std::string> inline_svgs(const std::string& html) {
+  std::vector<std::string> svgs;
+  for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) {
+    const std::size_t end = html.find("</svg>", at);
+    if (end == std::string::npos) break;
+    svgs.push_back(html.substr(at, end + 6 - at));
+  }
+  return svgs;
+}
+
+// Inline SVGs share one id space: every id on the page is defined once, and each figure's
+// references (glyph <use>, clip paths) resolve to an element of the same figure, so each figure
+// draws its own letters. Returns the number of ids checked.
+std::size_t expect_ids_unique_per_page(const std::string& html) {
+  const std::vector<std::string> all = svg_ids(html);
+  std::set<std::string> seen;
+  for (const std::string& id : all) EXPECT_TRUE(seen.insert(id).second) << "id '" << id << "' defined twice on the page";
+  const std::vector<std::string> svgs = inline_svgs(html);
+  for (std::size_t k = 0; k < svgs.size(); ++k) {
+    const std::vector<std::string> own = svg_ids(svgs[k]);
+    const std::set<std::string> defined(own.begin(), own.end());
+    for (const std::string& ref : svg_id_references(svgs[k]))
+      EXPECT_TRUE(defined.count(ref)) << "figure " << k + 1 << " refers to '" << ref << "', not one of its own ids";
+  }
+  return all.size();
 }
 
 struct StoredJob {
@@ -212,6 +242,22 @@ TEST_F(WalkerFigures, ReportIsOneSelfContainedPageWithTableAndFigures) {
   EXPECT_EQ(html.find("src=\""), std::string::npos);  // nothing external
 }
 
+// Issue 17: cairo names glyphs "glyph0-1" ... in every SVG; inlined unchanged, figures 2-5 of a
+// report drew figure 1's letters ("Cost ofrantphrhmei ml gr").
+TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) {
+  const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
+  const std::vector<std::string> svgs = inline_svgs(html);
+  ASSERT_EQ(svgs.size(), walker_figure_kinds().size());
+  for (const std::string& svg : svgs) ASSERT_NE(svg.find("glyph"), std::string::npos) << "a figure without text";
+  // The figures as cairo wrote them do share ids (the failure this guards against) ...
+  const std::vector<Figure> figures = walker_figures({walker_job_results(document_of(2, *hmt_))});
+  const std::vector<std::string> raw1 = svg_ids(svg_of(figures[0])), raw2 = svg_ids(svg_of(figures[1]));
+  ASSERT_FALSE(raw1.empty());
+  EXPECT_NE(std::find(raw2.begin(), raw2.end(), raw1.front()), raw2.end());
+  // ... the page does not.
+  EXPECT_GT(expect_ids_unique_per_page(html), 50u);
+}
+
 TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   nlohmann::json result;
   result["task"] = giant_swing::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
@@ -263,6 +309,7 @@ TEST_F(WalkerFigures, CommandLinePlotsAndReportsFromADatabase) {
   EXPECT_NE(text_of(dir / "plot.txt").find("stroboscope.png"), std::string::npos);
   ASSERT_EQ(std::system((cli + " report 2 --out " + (dir / "job2.html").string() + " > /dev/null").c_str()), 0);
   EXPECT_NE(text_of(dir / "job2.html").find("<svg"), std::string::npos);
+  EXPECT_GT(expect_ids_unique_per_page(text_of(dir / "job2.html")), 50u);
   // Bad input: an unknown kind and a job that does not exist are rejected (exit 2), a plot
   // without jobs is a usage error (exit 1).
   EXPECT_EQ(WEXITSTATUS(std::system((cli + " plot pie --job 1 2> /dev/null").c_str())), 2);

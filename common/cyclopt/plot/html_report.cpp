@@ -1,5 +1,7 @@
 #include "cyclopt/plot/html_report.hpp"
 
+#include "cyclopt/plot/svg_ids.hpp"
+
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -57,6 +59,7 @@ std::string to_html(const Report& report) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(report.title)
     << "</title><style>" << kStyle << "</style></head><body>\n";
   h << "<h1>" << html_escape(report.title) << "</h1>\n";
+  int figure_count = 0;  // the page-wide figure number prefixes each inline SVG's ids (svg_ids.hpp)
   if (!report.subtitle.empty()) h << "<p class=\"sub\">" << html_escape(report.subtitle) << "</p>\n";
   for (const ReportSection& s : report.sections) {
     h << "<h2>" << html_escape(s.heading) << "</h2>\n";
@@ -74,7 +77,8 @@ std::string to_html(const Report& report) {
       h << "</tbody></table>\n";
     }
     for (const ReportFigure& f : s.figures)
-      h << "<figure>" << f.svg << "<figcaption>" << html_escape(f.caption) << "</figcaption></figure>\n";
+      h << "<figure>" << svg_with_id_prefix(f.svg, "fig" + std::to_string(++figure_count) + "-") << "<figcaption>"
+        << html_escape(f.caption) << "</figcaption></figure>\n";
   }
   h << "</body></html>\n";
   return h.str();
