@@ -21,6 +21,17 @@ nlohmann::json walker_spec(const std::string& task) {
 
 using WalkerJobs = testing::MemqServerTest;
 
+// "field: message" of the rejection of a spec by the built-in kinds, or "accepted".
+std::string rejection(const nlohmann::json& spec) {
+  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  try {
+    service::validate_job_spec(spec, kinds);
+  } catch (const service::SpecError& e) {
+    return e.field() + ": " + e.what();
+  }
+  return "accepted";
+}
+
 TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
   const auto rows = run_job("eval-1", walker_spec("evaluate"), 1);
   ASSERT_EQ(rows.size(), 1u);
@@ -158,15 +169,6 @@ TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
 }
 
 TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  auto rejection = [&](nlohmann::json spec) -> std::string {
-    try {
-      service::validate_job_spec(spec, kinds);
-    } catch (const service::SpecError& e) {
-      return e.field() + ": " + e.what();
-    }
-    return "accepted";
-  };
   const nlohmann::json good = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
   EXPECT_EQ(rejection(good), "accepted");  // the 16 feet of section 9.2 against point feet
   nlohmann::json s = good;
@@ -187,15 +189,6 @@ TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {
 }
 
 TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  auto rejection = [&](nlohmann::json spec) -> std::string {
-    try {
-      service::validate_job_spec(spec, kinds);
-    } catch (const service::SpecError& e) {
-      return e.field() + ": " + e.what();
-    }
-    return "accepted";
-  };
   nlohmann::json s = walker_spec("optimise");
   s["speed"] = 7.0;
   EXPECT_NE(rejection(s).find("speed"), std::string::npos) << rejection(s);
