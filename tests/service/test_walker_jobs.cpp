@@ -131,8 +131,8 @@ TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
   const nlohmann::json spec = {{"scene", "walker"},
                                {"task", "foot_comparison"},
                                {"speeds", "1.0:0.1:1.1"},
-                               {"points", 100},
-                               {"feet", {"P1-barefoot-left-HM"}},
+                               {"points", 50},
+                               {"feet", {"P1-shoes-left-HM-SG"}},
                                {"multistart", {{"starts", 2}, {"seed", 3}, {"scale", 0.02}}},
                                {"continuation", {{"seed_speeds", 1.0}}}};
   const auto rows = run_job("comparison-1", spec, 2 * 2 + 2 + 2);
@@ -152,7 +152,7 @@ TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
       sum[k] += v["f_mech"].get<double>();
     }
   for (const auto& r : by_curve[0]) {
-    EXPECT_EQ(r["values"]["foot"], "P1-barefoot-left-HM");  // the only compared foot
+    EXPECT_EQ(r["values"]["foot"], "P1-shoes-left-HM-SG");  // the only compared foot
     EXPECT_NEAR(r["values"]["saving"].get<double>(),
                 1.0 - r["values"]["f_mech"].get<double>() / r["values"]["reference_f_mech"].get<double>(), 1e-12);
   }
@@ -164,7 +164,7 @@ TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
   EXPECT_EQ(rolling["common_speeds"].get<int>(), 2);
   EXPECT_NEAR(rolling["mean_f_mech"].get<double>(), sum[1] / 2, 1e-12);
   EXPECT_NEAR(rolling["saving"].get<double>(), 1.0 - sum[1] / sum[0], 1e-12);
-  std::printf("foot_comparison: point %.5f, P1 barefoot HM %.5f, saving %.1f %%\n", sum[0] / 2, sum[1] / 2,
+  std::printf("foot_comparison: point %.5f, P1 shoes HM %.5f, saving %.1f %%\n", sum[0] / 2, sum[1] / 2,
               100 * rolling["saving"].get<double>());
 }
 
