@@ -64,6 +64,15 @@ void WorkerJobContext::checkpoint_time() {
 
 std::set<storage::PointKey> WorkerJobContext::already_stored_points() { return store_.stored_points(job_.id); }
 
+void WorkerJobContext::store_checkpoint(const std::string& key, const std::string& value) {
+  try {
+    store_.store_checkpoint(job_.id, key, value);
+  } catch (const storage::StorageError& e) {  // as for a point: the job is re-queued
+    store_error_ = e.what();
+    throw;
+  }
+}
+
 service::StopReason WorkerJobContext::stop_reason() {
   if (std::chrono::steady_clock::now() - last_checkpoint() > kCheckpointInterval) try {
       checkpoint_time();

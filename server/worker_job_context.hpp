@@ -33,6 +33,8 @@ class WorkerJobContext final : public service::JobContext {
   void add_curve(int curve_index, const std::string& name, const std::string& parameter_name) override;
   bool store_point(const storage::SolutionPoint& point) override;
   std::set<storage::PointKey> already_stored_points() override;
+  void store_checkpoint(const std::string& key, const std::string& value) override;
+  std::map<std::string, std::string> stored_checkpoints() override { return store_.checkpoints(job_.id); }
   service::StopReason stop_reason() override;
 
   // Publishes the last report if rate limiting held it back.

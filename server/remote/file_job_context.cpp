@@ -13,13 +13,35 @@ FileJobContext::FileJobContext(const UnitSpool& spool, const UnitSpec& spec, dou
       min_interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
           std::chrono::duration<double>(1.0 / progress_hz))),
       stored_(spool.read_stored_keys()),
+      checkpoints_(spool.read_checkpoints()),
       sequence_(spool.next_sequence()) {
-  // Points an earlier run of this unit wrote but the server may not have ingested yet.
+  // Points and checkpoints an earlier run of this unit wrote but the server may not have ingested yet.
   for (const auto& [n, e] : spool.read_events(0))
-    if (e.type == UnitEvent::Type::point) stored_.insert(e.point.key);
+    if (e.type == UnitEvent::Type::point)
+      stored_.insert(e.point.key);
+    else if (e.type == UnitEvent::Type::checkpoint)
+      checkpoints_[e.checkpoint_key] = e.checkpoint_value;
 }
 
-void FileJobContext::append(const UnitEvent& event) { spool_.write_event(sequence_++, event); }
+void FileJobContext::append(const UnitEvent& event) {
+  const std::lock_guard lock(mutex_);
+  spool_.write_event(sequence_++, event);
+}
+
+void FileJobContext::store_checkpoint(const std::string& key, const std::string& value) {
+  UnitEvent e;
+  e.type = UnitEvent::Type::checkpoint;
+  e.checkpoint_key = key;
+  e.checkpoint_value = value;
+  append(e);
+  const std::lock_guard lock(mutex_);
+  checkpoints_[key] = value;
+}
+
+std::map<std::string, std::string> FileJobContext::stored_checkpoints() {
+  const std::lock_guard lock(mutex_);
+  return checkpoints_;
+}
 
 void FileJobContext::announce(int points_total) {
   UnitEvent e;

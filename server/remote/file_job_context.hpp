@@ -6,6 +6,8 @@
 #include "unit_spool.hpp"
 
 #include <chrono>
+#include <map>
+#include <mutex>
 #include <set>
 
 namespace cyclopt::server::remote {
@@ -22,6 +24,8 @@ class FileJobContext final : public service::JobContext {
   void add_curve(int curve_index, const std::string& name, const std::string& parameter_name) override;
   bool store_point(const storage::SolutionPoint& point) override;
   std::set<storage::PointKey> already_stored_points() override { return stored_; }
+  void store_checkpoint(const std::string& key, const std::string& value) override;
+  std::map<std::string, std::string> stored_checkpoints() override;
   service::StopReason stop_reason() override;
 
  private:
@@ -35,6 +39,8 @@ class FileJobContext final : public service::JobContext {
   std::chrono::steady_clock::time_point last_cancel_check_{};
   bool cancelled_ = false;
   std::set<storage::PointKey> stored_;  // by the server, or by earlier runs of this unit
+  std::map<std::string, std::string> checkpoints_;  // likewise
+  std::mutex mutex_;  // append() and checkpoints_: checkpoints come from multistart threads
   int sequence_ = 0;
   long long iterations_ = 0;
 };

@@ -122,6 +122,7 @@ class Unit {
     spec.submitted_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
     spool_.write_spec(spec);
     spool_.write_stored_keys(ctx_.already_stored_points());
+    spool_.write_checkpoints(ctx_.stored_checkpoints());
     spool_.clear_run_state();
     const double remaining = std::max(1.0, spec.limits.max_wall_seconds - spec.run_seconds_before);
     int minutes = static_cast<int>(std::ceil(remaining / 60.0)) + 1;
@@ -151,6 +152,7 @@ class Unit {
         case UnitEvent::Type::announce: ctx_.announce(e.points_total); break;
         case UnitEvent::Type::curve: ctx_.add_curve(e.curve_index, e.curve_name, e.parameter_name); break;
         case UnitEvent::Type::point: ctx_.store_point(e.point); break;
+        case UnitEvent::Type::checkpoint: ctx_.store_checkpoint(e.checkpoint_key, e.checkpoint_value); break;
       }
       next_event_ = n + 1;
     }

@@ -151,6 +151,20 @@ std::set<storage::PointKey> UnitSpool::read_stored_keys() const {
   return keys;
 }
 
+void UnitSpool::write_checkpoints(const std::map<std::string, std::string>& checkpoints) const {
+  write_file_atomically(dir_ / "checkpoints.json", nlohmann::json(checkpoints).dump());
+}
+
+std::map<std::string, std::string> UnitSpool::read_checkpoints() const {
+  const fs::path path = dir_ / "checkpoints.json";
+  if (!fs::exists(path)) return {};
+  try {
+    return read_json(path).get<std::map<std::string, std::string>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
 void UnitSpool::write_event(int sequence, const UnitEvent& e) const {
   nlohmann::json j;
   switch (e.type) {
@@ -159,6 +173,9 @@ void UnitSpool::write_event(int sequence, const UnitEvent& e) const {
       j = {{"type", "curve"}, {"curve", e.curve_index}, {"name", e.curve_name}, {"parameter_name", e.parameter_name}};
       break;
     case UnitEvent::Type::point: j = {{"type", "point"}, {"point", point_to_json(e.point)}}; break;
+    case UnitEvent::Type::checkpoint:
+      j = {{"type", "checkpoint"}, {"key", e.checkpoint_key}, {"value", e.checkpoint_value}};
+      break;
   }
   write_file_atomically(dir_ / "events" / event_name(sequence), j.dump());
 }
@@ -189,6 +206,10 @@ std::vector<std::pair<int, UnitEvent>> UnitSpool::read_events(int from) const {
       } else if (type == "point") {
         e.type = UnitEvent::Type::point;
         e.point = point_from_json(j.at("point"));
+      } else if (type == "checkpoint") {
+        e.type = UnitEvent::Type::checkpoint;
+        e.checkpoint_key = j.at("key").get<std::string>();
+        e.checkpoint_value = j.at("value").get<std::string>();
       } else {
         throw std::runtime_error(path.string() + ": unknown event type '" + type + "'");
       }

@@ -6,7 +6,8 @@
 //
 //   DIR/unit.json          what to run: job id, task, spec, limits       (server -> worker)
 //   DIR/stored_keys.json   points the store already holds: skipped        (server -> worker)
-//   DIR/events/NNNNNNNN.json  announce / curve / point, in order           (worker -> server)
+//   DIR/checkpoints.json   the job's checkpoints the store holds: reused    (server -> worker)
+//   DIR/events/NNNNNNNN.json  announce / curve / point / checkpoint, in order (worker -> server)
 //   DIR/progress.json      the latest progress report                     (worker -> server)
 //   DIR/cancel             present: stop at the next check                (server -> worker)
 //   DIR/started.json       when the worker started (Unix seconds)         (worker -> server)
@@ -23,6 +24,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -41,12 +43,13 @@ struct UnitSpec {
 
 // One entry of the worker's event stream.
 struct UnitEvent {
-  enum class Type { announce, curve, point };
+  enum class Type { announce, curve, point, checkpoint };
   Type type = Type::point;
   int points_total = -1;                      // announce
   int curve_index = 0;                        // curve
   std::string curve_name, parameter_name;     // curve
   storage::SolutionPoint point;               // point
+  std::string checkpoint_key, checkpoint_value;  // checkpoint (JobContext::store_checkpoint)
 };
 
 struct UnitOutcome {
@@ -64,6 +67,8 @@ class UnitSpool {
   UnitSpec read_spec() const;  // throws std::runtime_error naming the file
   void write_stored_keys(const std::set<storage::PointKey>& keys) const;
   std::set<storage::PointKey> read_stored_keys() const;
+  void write_checkpoints(const std::map<std::string, std::string>& checkpoints) const;
+  std::map<std::string, std::string> read_checkpoints() const;
 
   // Appends an event as file number `sequence` (the worker counts from next_sequence()).
   void write_event(int sequence, const UnitEvent& event) const;

@@ -64,6 +64,7 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
   std::atomic<int> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  std::mutex finished_mutex;  // on_run_finished is called one at a time
   auto worker = [&] {
     try {
       const std::unique_ptr<Problem> problem = make_problem();
@@ -74,7 +75,15 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
           run.message = "not started: stopped by should_stop";
           continue;
         }
+        if (std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt) {
+          run = std::move(*recorded);
+          continue;
+        }
         run = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+        if (options.on_run_finished && run.termination != Termination::user_stop) {
+          const std::lock_guard<std::mutex> lock(finished_mutex);
+          options.on_run_finished(i, run);
+        }
       }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(failure_mutex);

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -30,6 +31,11 @@ struct MultistartOptions {
   double objective_tolerance = 1e-6;
   double x_tolerance = 1e-4;
   SolverOptions solver;  // for every local solve (on_iteration is called from worker threads)
+  // Resume (issue 19 item 5): a run that recorded_run(i) returns is taken as run i instead of
+  // being solved (its x is the final point); every run solved here to the end (not stopped by
+  // should_stop) is passed to on_run_finished(i, run), one call at a time, from worker threads.
+  std::function<std::optional<SolverSummary>(int)> recorded_run;
+  std::function<void(int, const SolverSummary&)> on_run_finished;
 };
 
 // One distinct local optimum found by the successful runs.

@@ -6,6 +6,7 @@
 #include "cyclopt/storage/solution_point.hpp"
 
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 
@@ -40,6 +41,11 @@ class JobContext {
   virtual bool store_point(const storage::SolutionPoint& point) = 0;
   // Points committed by earlier attempts of this job: a resumed job skips them.
   virtual std::set<storage::PointKey> already_stored_points() = 0;
+  // Intermediate results a resumed job reuses instead of computing them again (a sweep's finished
+  // solves and continuation runs: studies/sweep_journal.hpp); durable before returning, never
+  // shown as results. store_checkpoint may be called from several threads (one at a time).
+  virtual void store_checkpoint(const std::string& key, const std::string& value) = 0;
+  virtual std::map<std::string, std::string> stored_checkpoints() = 0;
 
   // Poll between points and inside solver callbacks; return as soon as it is not `none`.
   virtual StopReason stop_reason() = 0;

@@ -3,6 +3,7 @@
 #include "cyclopt/continuation/continuation_solver.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -125,6 +126,7 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
   so.continuation = job.options;
   so.continuation.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "speed sweep"});
   so.continuation.corrector.should_stop = stop_predicate(ctx);
+  so.journal = sweep_journal(ctx);  // a resumed sweep reuses what an earlier attempt finished
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
   CurveStore store(ctx, family, 1);
@@ -146,6 +148,9 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
     }
     p.values["sweep_seconds"] = r.seconds;
     p.values["curves"] = r.curves;
+    // This attempt's work: what it solved and what it took over from earlier attempts.
+    p.values["attempt"] = {{"multistart_solves", r.multistart_solves}, {"resumed_solves", r.resumed_solves},
+                           {"computed_runs", r.computed_runs}, {"resumed_runs", r.resumed_runs}};
     ctx.store_point(p);
   }
 }

@@ -3,6 +3,7 @@
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/solver_progress.hpp"
+#include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
@@ -59,8 +60,9 @@ void run_optimise(const nlohmann::json& spec, JobContext& ctx) {
 void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   const WalkerJob job = parse_walker_job(spec, false);
   ctx.add_curve(0, "distinct optima, best first", "rank");
-  // The multistart is deterministic (seeded starts), so a resumed job recomputes it and stores the
-  // optima an interrupted attempt had not stored yet (store_point ignores stored keys).
+  // The multistart is deterministic (seeded starts): a resumed job takes the solves an interrupted
+  // attempt finished from its checkpoints, solves the rest, and stores the optima not stored yet
+  // (store_point ignores stored keys).
   const double v = job.speeds[0];
   const walker::WalkerModel<double> model = job.model();
   const walker::GaitProblemOptions po = problem_at(job, v);
@@ -73,6 +75,9 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   mo.solver = job.solver;
   mo.solver.on_iteration = stop_requests(ctx);
   mo.solver.should_stop = stop_predicate(ctx);
+  const studies::SweepJournal journal = sweep_journal(ctx);
+  mo.recorded_run = [&journal](int i) { return journal.find_solve(0, i); };
+  mo.on_run_finished = [&journal](int i, const nlp::SolverSummary& run) { journal.record_solve(0, i, run); };
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
                        .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
   const nlp::MultistartResult r = nlp::multistart(

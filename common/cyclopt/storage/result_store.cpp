@@ -312,6 +312,21 @@ std::set<PointKey> ResultStore::stored_points(std::int64_t job_id) {
   return keys;
 }
 
+void ResultStore::store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value) {
+  std::lock_guard lock(mutex_);
+  Statement ins(db_, "INSERT OR REPLACE INTO checkpoints (job_id, key, value) VALUES (?, ?, ?)");
+  ins.bind(1, job_id).bind(2, key).bind(3, value).run();
+}
+
+std::map<std::string, std::string> ResultStore::checkpoints(std::int64_t job_id) {
+  std::lock_guard lock(mutex_);
+  std::map<std::string, std::string> out;
+  Statement q(db_, "SELECT key, value FROM checkpoints WHERE job_id = ?");
+  q.bind(1, job_id);
+  while (q.step()) out.emplace(q.text(0), q.text(1));
+  return out;
+}
+
 void ResultStore::add_event(std::int64_t job_id, const std::string& kind, const std::string& message) {
   std::lock_guard lock(mutex_);
   add_event_locked(job_id, kind, message);

@@ -8,6 +8,7 @@
 #include "cyclopt/storage/sqlite_handle.hpp"
 
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -79,6 +80,8 @@ class ResultStore {
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
   std::set<PointKey> stored_points(std::int64_t job_id);
+  void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces
+  std::map<std::string, std::string> checkpoints(std::int64_t job_id);
   void add_event(std::int64_t job_id, const std::string& kind, const std::string& message);
 
   // Reads.

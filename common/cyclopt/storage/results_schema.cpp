@@ -55,6 +55,12 @@ CREATE TABLE IF NOT EXISTS solutions (
   solved_at REAL NOT NULL,
   UNIQUE (job_id, curve_index, point_index)
 );
+CREATE TABLE IF NOT EXISTS checkpoints (
+  job_id INTEGER NOT NULL REFERENCES jobs (id),
+  key TEXT NOT NULL,
+  value TEXT NOT NULL,
+  PRIMARY KEY (job_id, key)
+);
 CREATE TABLE IF NOT EXISTS trajectories (
   id INTEGER PRIMARY KEY,
   solution_id INTEGER NOT NULL UNIQUE REFERENCES solutions (id),

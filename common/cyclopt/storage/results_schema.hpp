@@ -29,6 +29,10 @@
 //                  constraint_violation, iterations, status, values_json, solved_at)
 //   trajectories  (id, solution_id UNIQUE -> solutions.id, format, data BLOB): the time series or
 //                 profile belonging to a solution ("json" = UTF-8 JSON document in the blob)
+//   checkpoints   (job_id, key, value), PRIMARY KEY(job_id, key): intermediate results of a job
+//                 that a resumed attempt reuses (a sweep's finished solves and continuation runs,
+//                 service/sweep_checkpoints.hpp); not results. Added after version 1 was
+//                 deployed; created in place in older files.
 //   schema_info   (key, value): "version" = 1
 //
 // Example queries: README.md, section "The service".

@@ -5,6 +5,7 @@
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -80,6 +81,8 @@ class Sweep {
   std::vector<bool> unreached_tried_;           // per grid speed
   std::set<std::pair<std::size_t, int>> dominance_tried_;  // (grid speed, neighbour's curve)
   std::map<std::size_t, std::string> failures_;  // per grid speed: what recovery tried
+  int batches_ = 0;                             // multistart batches begun (journal keys)
+  int runs_begun_ = 0;                          // continuation runs begun (journal keys)
 };
 
 nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts) {
@@ -89,11 +92,22 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
   // Solves from perturbed or distant starts start from W_1 of (6.24) - the seed's choice, W_1 = I
   // is only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
   mo.solver.sqp.difference_hessian = true;
+  const int batch = batches_++;
+  std::atomic<int> resumed{0};  // recorded_run is called from the worker threads
+  if (const SweepJournal& j = o_.journal; j.find_solve)
+    mo.recorded_run = [&j, &resumed, batch](int i) {
+      std::optional<nlp::SolverSummary> run = j.find_solve(batch, i);
+      if (run) ++resumed;
+      return run;
+    };
+  if (const SweepJournal& j = o_.journal; j.record_solve)
+    mo.on_run_finished = [&j, batch](int i, const nlp::SolverSummary& run) { j.record_solve(batch, i, run); };
   const int n = static_cast<int>(starts.size());
   const std::clock_t cpu = std::clock();
   nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
                                             std::move(starts), mo);
-  r_.multistart_solves += n;
+  r_.multistart_solves += n - resumed;
+  r_.resumed_solves += resumed;
   r_.multistart_seconds += m.wall_seconds;
   r_.multistart_cpu_seconds += static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
   return m;
@@ -185,7 +199,21 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
   ContinuationOptions continuation = o_.continuation;
   continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
   const int first_new_curve = r_.curves;
-  ContinuationResult run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
+  const int run_number = runs_begun_++;
+  ContinuationResult run;
+  bool computed = false;
+  if (std::optional<ContinuationResult> recorded = o_.journal.find_run ? o_.journal.find_run(run_number) : std::nullopt) {
+    // The run as an earlier attempt computed it: its points go through the same callback (the store
+    // skips those it holds), so merge stops, curve numbering and the later steps are unchanged.
+    run = std::move(*recorded);
+    for (const CurvePoint& p : run.points)
+      if (!forward(p)) break;
+    ++r_.resumed_runs;
+  } else {
+    run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
+    ++r_.computed_runs;
+    computed = true;
+  }
   for (int c = first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
@@ -206,6 +234,7 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     run.message = "stopped at " + std::to_string(*superseded) + " m/s: another curve is as good from there on";
   else if (run.message == "stopped")  // the corrector's iteration callback asked to stop
     stopped_ = true;
+  if (computed && !stopped_ && o_.journal.record_run) o_.journal.record_run(run_number, run);
   r_.runs.push_back(std::move(run));
 }
 

@@ -26,6 +26,7 @@
 // recovery ends. A speed still without a point gets a reason naming what was tried and which
 // options to change. BestPoint::step tells which step found the curve through the selected point.
 #include "cyclopt/continuation/continuation_solver.hpp"
+#include "cyclopt/studies/sweep_journal.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include <cstdint>
 #include <functional>
@@ -57,6 +58,7 @@ struct SpeedSweepOptions {
   // failed and the trust region shrinks, instead of spending MaxIter = 2000 iterations per failing
   // try (HMT P2 downwards near 0.46 m/s: ~16000 corrector iterations per run). >= 1.
   int corrector_max_iterations = 300;
+  SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
 };
 
 // The step of the sweep that found a curve (the first point of it).
@@ -101,7 +103,10 @@ struct SpeedSweepResult {
   std::vector<RecoveryAttempt> recoveries;  // in the order tried
   std::vector<CurveOrigin> origins;      // of curve id 0 .. curves - 1
   int curves = 0;                        // curve ids used: 0 .. curves - 1
-  int multistart_solves = 0;             // step 1 and R1-R3
+  int multistart_solves = 0;             // step 1 and R1-R3, solved in this attempt
+  int resumed_solves = 0;                // ... taken from the journal instead
+  int computed_runs = 0;                 // continuation runs computed in this attempt
+  int resumed_runs = 0;                  // ... taken from the journal instead
   double multistart_seconds = 0.0;
   double multistart_cpu_seconds = 0.0;   // process CPU time during them (all threads)
   double recovery_seconds = 0.0;         // R1-R3 with their continuation runs

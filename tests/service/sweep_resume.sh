@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Resume of a walker speed sweep after kill -9 (issue 19 item 5, acceptance 5): the point-foot
+# sweep 0.6:0.1:1.4 runs once uninterrupted (database A) and once with cycloptd killed -9 three
+# times while it runs (database B, restarted each time). Reports per attempt what was computed
+# (multistart solves and continuation runs recorded as checkpoints, solution rows stored), checks
+# that the final attempt took over every finished solve and run, and that B's stored rows equal A's
+# (keys, speed, status, objective to 12 digits). Runs inside its own network namespace.
+#
+# usage: sweep_resume.sh CYCLOPTD CYCLOPT [STARTS]   (STARTS: multistart runs per seed speed, default 4)
+# exit: 0 pass, 1 fail, 77 skipped (no network namespace)
+set -euo pipefail
+if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
+  if ! unshare -n true 2>/dev/null; then
+    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
+    exit 77
+  fi
+  exec timeout -k 5 900 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
+fi
+CYCLOPTD=$1 CYCLOPT=$2 STARTS=${3:-4}
+ip link set lo up
+ip route add 224.0.0.0/4 dev lo
+ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
+WORK=$(mktemp -d /tmp/cyclopt-resume.XXXXXX)
+SERVER=""
+cleanup() { [ -n "$SERVER" ] && kill -9 "$SERVER" 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"; }
+trap cleanup EXIT
+fail() { echo "FAIL: $*"; tail -20 "$WORK"/server-*.log 2>/dev/null; exit 1; }
+wait_for() {
+  local deadline=$(( $(date +%s) + $1 )); shift
+  until "$@"; do [ "$(date +%s)" -lt "$deadline" ] || return 1; sleep 0.05; done
+}
+start_server() {  # start_server DB
+  "$CYCLOPTD" --database "$1" --workers 1 >>"$WORK/server-$(basename "$1").log" 2>&1 &
+  SERVER=$!
+  wait_for 10 "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 || fail "server did not come up"
+}
+sql() { sqlite3 -batch -noheader "$1" "$2"; }
+cat >"$WORK/sweep.json" <<SPEC
+{"scene": "walker", "task": "sweep", "foot": "point", "speeds": "0.6:0.1:1.4", "objective": "f_mech",
+ "multistart": {"starts": $STARTS}}
+SPEC
+ROWS="SELECT curve_index, point_index, printf('%.6f', parameter), status, printf('%.12g', objective) FROM solutions ORDER BY 1, 2"
+
+echo "== uninterrupted sweep (database A)"
+A=$WORK/a.db
+T0=$(date +%s.%N)
+start_server "$A"
+"$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id whole --watch >/dev/null 2>"$WORK/watch-a.txt" || fail "uninterrupted sweep failed"
+T1=$(date +%s.%N)
+kill -TERM "$SERVER"; wait "$SERVER" || true; SERVER=""
+echo "done in $(echo "$T0 $T1" | awk '{printf "%.1f", $2 - $1}') s: $(sql "$A" "SELECT count(*) FROM solutions") rows, $(sql "$A" "SELECT count(*) FROM checkpoints") checkpoints"
+
+echo "== the same sweep, cycloptd killed -9 three times (database B)"
+B=$WORK/b.db
+start_server "$B"
+"$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id killed >/dev/null || fail "submit"
+PREV_CP=0 PREV_ROWS=0
+for k in 1 2 3; do
+  # Kill once this attempt has recorded something new (a finished solve or run) and a bit more.
+  wait_for 300 bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -gt $PREV_CP ]" || fail "attempt $k recorded nothing"
+  sleep "0.$((RANDOM % 9 + 1))"
+  kill -9 "$SERVER"; wait "$SERVER" 2>/dev/null || true; SERVER=""
+  STATE=$(sql "$B" "SELECT state FROM jobs")
+  CP=$(sql "$B" "SELECT count(*) FROM checkpoints") R=$(sql "$B" "SELECT count(*) FROM solutions")
+  echo "attempt $k killed ($STATE): computed and recorded $((CP - PREV_CP)) solves/runs, stored $((R - PREV_ROWS)) rows"
+  PREV_CP=$CP PREV_ROWS=$R
+  start_server "$B"
+  [ "$STATE" = running ] || fail "the job had finished before kill $k: choose a longer sweep (STARTS)"
+done
+"$CYCLOPT" watch 1 --watch-timeout 600 >/dev/null 2>"$WORK/watch-b.txt" || fail "resumed sweep did not finish: $(sql "$B" "SELECT state, error FROM jobs")"
+kill -TERM "$SERVER"; wait "$SERVER" || true; SERVER=""
+CP=$(sql "$B" "SELECT count(*) FROM checkpoints") R=$(sql "$B" "SELECT count(*) FROM solutions")
+echo "final attempt: computed and recorded $((CP - PREV_CP)) solves/runs, stored $((R - PREV_ROWS)) rows"
+WORKDONE=$(sql "$B" "SELECT json_extract(values_json, '$.attempt') FROM solutions WHERE curve_index = 0 LIMIT 1")
+echo "final attempt's own count: $WORKDONE"
+echo "attempts $(sql "$B" "SELECT attempts FROM jobs"), integrity_check $(sql "$B" "PRAGMA integrity_check")"
+[ "$(sql "$B" "SELECT attempts FROM jobs")" -ge 2 ] || fail "the job was never resumed"
+RESUMED=$(sql "$B" "SELECT json_extract(values_json, '$.attempt.resumed_solves') + json_extract(values_json, '$.attempt.resumed_runs') FROM solutions WHERE curve_index = 0 LIMIT 1")
+[ "$RESUMED" -gt 0 ] || fail "the final attempt took nothing over"
+[ "$(sql "$B" "SELECT count(*) FROM checkpoints")" -eq "$(sql "$A" "SELECT count(*) FROM checkpoints")" ] ||
+  fail "checkpoints differ: A $(sql "$A" "SELECT count(*) FROM checkpoints"), B $CP"
+sql "$A" "$ROWS" >"$WORK/a.txt"
+sql "$B" "$ROWS" >"$WORK/b.txt"
+diff "$WORK/a.txt" "$WORK/b.txt" >"$WORK/diff.txt" || { head -20 "$WORK/diff.txt"; fail "stored rows differ from the uninterrupted run's"; }
+echo "stored rows equal the uninterrupted run's: $(wc -l <"$WORK/a.txt") rows"
+echo "PASS"

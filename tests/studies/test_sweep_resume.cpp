@@ -1,0 +1,141 @@
+// Resume of an interrupted speed sweep (issue 19 item 5; studies/sweep_journal.hpp): a sweep
+// stopped part-way and run again with the journal of the stopped attempt solves only what that
+// attempt had not finished, and selects exactly the points of an uninterrupted sweep. The journal
+// here is a map of the same JSON texts the service stores (service/sweep_checkpoints.hpp), so the
+// round trip through the stored form is part of what is checked.
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/service/sweep_checkpoints.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <string>
+
+using namespace cyclopt;
+using namespace cyclopt::studies;
+
+namespace {
+
+// The JobContext side of the journal, in memory.
+struct MemoryJournal {
+  std::map<std::string, std::string> texts;
+  std::mutex mutex;
+  int recorded = 0;
+
+  SweepJournal journal() {
+    SweepJournal j;
+    j.find_solve = [this](int b, int s) -> std::optional<nlp::SolverSummary> {
+      const std::lock_guard lock(mutex);
+      const auto it = texts.find("solve/" + std::to_string(b) + "/" + std::to_string(s));
+      if (it == texts.end()) return std::nullopt;
+      return service::summary_from_json(nlohmann::json::parse(it->second));
+    };
+    j.record_solve = [this](int b, int s, const nlp::SolverSummary& run) {
+      const std::lock_guard lock(mutex);
+      texts["solve/" + std::to_string(b) + "/" + std::to_string(s)] = service::summary_to_json(run).dump();
+      ++recorded;
+    };
+    j.find_run = [this](int n) -> std::optional<continuation::ContinuationResult> {
+      const auto it = texts.find("run/" + std::to_string(n));
+      if (it == texts.end()) return std::nullopt;
+      return service::run_from_json(nlohmann::json::parse(it->second));
+    };
+    j.record_run = [this](int n, const continuation::ContinuationResult& r) {
+      texts["run/" + std::to_string(n)] = service::run_to_json(r).dump();
+      ++recorded;
+    };
+    return j;
+  }
+};
+
+struct SweepCase {
+  walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
+  walker::GaitProblemOptions problem{walker::Objective::mechanical, 0.6, walker::Quadrature::trapezoid, {}};
+  SpeedSweepOptions options;
+  // The recovery test's case (test_speed_sweep_recovery.cpp): a seed multistart, continuation
+  // stopping at the minimal step, then R1-R3 with runs of their own - every kind of journal entry.
+  SweepCase() {
+    options.speeds = {0.6, 0.7, 0.8, 0.9};
+    options.seed_speeds = {0.6};
+    options.starts = 2;
+  }
+};
+
+void expect_same_best(const SpeedSweepResult& a, const SpeedSweepResult& b) {
+  ASSERT_EQ(a.best.size(), b.best.size());
+  for (std::size_t i = 0; i < a.best.size(); ++i) {
+    ASSERT_EQ(a.best[i].found, b.best[i].found) << a.best[i].speed;
+    if (!a.best[i].found) continue;
+    EXPECT_EQ(a.best[i].point.objective, b.best[i].point.objective) << a.best[i].speed;
+    EXPECT_EQ(a.best[i].point.curve_id, b.best[i].point.curve_id) << a.best[i].speed;
+    EXPECT_EQ((a.best[i].point.x - b.best[i].point.x).lpNorm<Eigen::Infinity>(), 0.0) << a.best[i].speed;
+  }
+  EXPECT_EQ(a.curves, b.curves);
+}
+
+}  // namespace
+
+TEST(SweepResume, AnInterruptedSweepSolvesOnlyWhatItHadNotFinished) {
+  const SweepCase c;
+  const SpeedSweepResult whole = speed_sweep(c.model, c.problem, c.options);
+  ASSERT_GE(whole.runs.size(), 2u);
+  int total_points = 0;
+  for (const continuation::ContinuationResult& run : whole.runs) total_points += static_cast<int>(run.points.size());
+
+  // Attempt 1: stopped after three quarters of the points (a crash leaves the same journal: what was
+  // recorded before it).
+  MemoryJournal memory;
+  SpeedSweepOptions o = c.options;
+  o.journal = memory.journal();
+  int reported = 0;
+  const SpeedSweepResult first =
+      speed_sweep(c.model, c.problem, o, [&](const continuation::CurvePoint&) { return ++reported < 3 * total_points / 4; });
+  ASSERT_GT(memory.recorded, 0);
+  EXPECT_EQ(first.resumed_solves + first.resumed_runs, 0);
+
+  // Attempt 2 resumes: the finished solves and runs are taken over, the selection is the
+  // uninterrupted one, bit for bit.
+  const SpeedSweepResult second = speed_sweep(c.model, c.problem, o);
+  std::printf("uninterrupted: %d solves, %d runs; attempt 1: %d solves, %d runs; attempt 2: %d solves + %d resumed, "
+              "%d runs + %d resumed\n",
+              whole.multistart_solves, whole.computed_runs, first.multistart_solves, first.computed_runs,
+              second.multistart_solves, second.resumed_solves, second.computed_runs, second.resumed_runs);
+  EXPECT_GT(second.resumed_solves, 0);
+  EXPECT_GT(second.resumed_runs, 0);
+  EXPECT_LT(second.multistart_solves, whole.multistart_solves);
+  EXPECT_EQ(second.multistart_solves + second.resumed_solves, whole.multistart_solves);
+  EXPECT_EQ(second.computed_runs + second.resumed_runs, whole.computed_runs);
+  expect_same_best(whole, second);
+
+  // Attempt 3 finds everything recorded: nothing is solved again.
+  const SpeedSweepResult third = speed_sweep(c.model, c.problem, o);
+  EXPECT_EQ(third.multistart_solves, 0);
+  EXPECT_EQ(third.computed_runs, 0);
+  expect_same_best(whole, third);
+}
+
+TEST(SweepResume, CheckpointTextsRoundTripEveryField) {
+  nlp::SolverSummary s;
+  s.termination = nlp::Termination::acceptable;
+  s.message = "ok \"quoted\"";
+  s.iterations = 7;
+  s.objective = 0.1 + 0.2;  // not representable in few digits
+  s.kkt_error = std::nan("");
+  s.x = Eigen::VectorXd::LinSpaced(5, -1.0 / 3.0, 2.0 / 7.0);
+  s.bound_multipliers = Eigen::VectorXd::Constant(2, 1e-300);
+  const nlp::SolverSummary back = service::summary_from_json(nlohmann::json::parse(service::summary_to_json(s).dump()));
+  EXPECT_EQ(back.termination, s.termination);
+  EXPECT_EQ(back.message, s.message);
+  EXPECT_EQ(back.iterations, s.iterations);
+  EXPECT_EQ(back.objective, s.objective);
+  EXPECT_TRUE(std::isnan(back.kkt_error));
+  EXPECT_EQ(back.x, s.x);
+  EXPECT_EQ(back.bound_multipliers, s.bound_multipliers);
+  EXPECT_EQ(back.equality_multipliers.size(), 0);
+  nlohmann::json bad = service::summary_to_json(s);
+  bad["termination"] = 99;
+  EXPECT_THROW(service::summary_from_json(bad), nlohmann::json::exception);
+}
