@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <mutex>
 #include <sstream>
 
 namespace {
@@ -48,6 +49,14 @@ class MemoryJobContext final : public service::JobContext {
     return true;
   }
   std::set<storage::PointKey> already_stored_points() override { return keys_; }
+  void store_checkpoint(const std::string& key, const std::string& value) override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    checkpoints_[key] = value;
+  }
+  std::map<std::string, std::string> stored_checkpoints() override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return checkpoints_;
+  }
   service::StopReason stop_reason() override { return service::StopReason::none; }
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
@@ -57,6 +66,8 @@ class MemoryJobContext final : public service::JobContext {
  private:
   service::JobLimits limits_{1e9, 2000000000};
   std::set<storage::PointKey> keys_;
+  std::map<std::string, std::string> checkpoints_;
+  std::mutex mutex_;
   std::string last_;
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
