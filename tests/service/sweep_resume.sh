@@ -6,7 +6,9 @@
 # that the final attempt took over every finished solve and run, and that B's stored rows equal A's
 # (keys, speed, status, objective to 12 digits). Runs inside its own network namespace.
 #
-# usage: sweep_resume.sh CYCLOPTD CYCLOPT [STARTS]   (STARTS: multistart runs per seed speed, default 4)
+# usage: sweep_resume.sh CYCLOPTD CYCLOPT [STARTS [SPREAD]]
+#   STARTS: multistart runs per seed speed (default 4); SPREAD: each attempt is killed once it has
+#   recorded at least this fraction of the uninterrupted run's checkpoints (default 0: at its first)
 # exit: 0 pass, 1 fail, 77 skipped (no network namespace)
 set -euo pipefail
 if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
@@ -16,7 +18,7 @@ if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
   fi
   exec timeout -k 5 900 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
 fi
-CYCLOPTD=$1 CYCLOPT=$2 STARTS=${3:-4}
+CYCLOPTD=$1 CYCLOPT=$2 STARTS=${3:-4} SPREAD=${4:-0}
 ip link set lo up
 ip route add 224.0.0.0/4 dev lo
 ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
@@ -56,9 +58,10 @@ B=$WORK/b.db
 start_server "$B"
 "$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id killed >/dev/null || fail "submit"
 PREV_CP=0 PREV_ROWS=0
+STEP=$(awk -v n="$(sql "$A" "SELECT count(*) FROM checkpoints")" -v s="$SPREAD" 'BEGIN {k = int(n * s); print (k < 1 ? 1 : k)}')
 for k in 1 2 3; do
-  # Kill once this attempt has recorded something new (a finished solve or run) and a bit more.
-  wait_for 300 bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -gt $PREV_CP ]" || fail "attempt $k recorded nothing"
+  # Kill once this attempt has recorded STEP new entries (finished solves or runs) and a bit more.
+  wait_for 600 bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -ge $((PREV_CP + STEP)) ]" || fail "attempt $k recorded too little"
   sleep "0.$((RANDOM % 9 + 1))"
   kill -9 "$SERVER"; wait "$SERVER" 2>/dev/null || true; SERVER=""
   STATE=$(sql "$B" "SELECT state FROM jobs")
