@@ -6,6 +6,7 @@
 #include "cyclopt/foot/foot_report.hpp"
 #include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "foot_fit_commands.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,8 @@ namespace {
 constexpr const char* kUsage = R"(usage: cyclopt-foot [--preset NAME | --foot FILE.json] [--density RHO] [--samples N] [--json]
        cyclopt-foot --list-presets [--subject P1..P9] [--footwear barefoot|shoes] [--side left|right]
                     [--model HM|HMT] [--trajectory SG|AK|IK] [--table 4.2|B.1..B.11] [--section-9-2]
+       cyclopt-foot fit [options] TRIAL...    (fit HM / HMT to marker files; fit --help)
+       cyclopt-foot synth [options] --out DIR (synthetic marker trials; synth --help)
 
 Describes a foot geometry of the walker: polygon transitions, admissible foot angles, mass
 properties from an area density (appendix E of the seed) and the ankle / contact-point kinematics
@@ -83,6 +86,8 @@ int list_presets(const cyclopt::foot::FittedFootFilter& filter, bool filtered) {
 
 int main(int argc, char** argv) {
   using namespace cyclopt::foot;
+  if (argc > 1 && std::string(argv[1]) == "fit") return cyclopt::client::run_fit_command(argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "synth") return cyclopt::client::run_synth_command(argc, argv);
   std::string preset = "P2-shoes-left-HMT", file;
   std::optional<double> density;
   FootReportOptions options;

@@ -1,0 +1,392 @@
+#include "foot_fit_commands.hpp"
+
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/foot_fit/ankle_track.hpp"
+#include "cyclopt/foot_fit/marker_csv_file.hpp"
+#include "cyclopt/foot_fit/rolling_foot_fit.hpp"
+#include "cyclopt/foot_fit/synthetic_trials.hpp"
+#include "cyclopt/foot_fit/trc_file.hpp"
+#include "cyclopt/plot/foot_fit_figures.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace cyclopt::client {
+namespace {
+
+namespace ff = cyclopt::foot_fit;
+
+constexpr const char* kFitUsage = R"(usage: cyclopt-foot fit [options] TRIAL.trc|TRIAL.csv ...
+
+Fits the HM and HMT feet to the ankle trajectory of K >= 1 trials of one foot (seed 001,
+section 4.2): two circle fits for the start (eq. 4.9-4.12), the HM fit (4.13-4.17), the HMT fit
+started from it (4.18-4.22). Units are SI on output (m, rad).
+
+  --marker NAME        ankle marker; give it twice for the two malleoli whose mean is the ankle
+                       (eq. 4.1); default LMAL and MMAL
+  --units mm|cm|m      unit of CSV files without a '# units:' line (.trc files state theirs)
+  --vertical-axis A    x, y or z: the file axis that points up (default z; OpenSim often y)
+  --ground Z           ground level along the vertical axis, m (default 0)
+  --direction RAD      walking direction in the horizontal plane (default: from the data, 4.2-4.3)
+  --interval T0:T1     rolling phase as a time interval (s) instead of the force column or the
+                       kinematic rule
+  --force-column NAME  CSV column marking the rolling phase (eq. 4.5; default Fz)
+  --force-threshold N  |force| above which the foot is on the plate (default 20 N)
+  --max-rolling-speed V  kinematic rule: ankle speed below V m/s around the lowest point (default 2)
+  --model HM|HMT|both  which fits to report (default both; HMT always starts from HM)
+  --no-toe-bound       drop the seed's l_MT <= z_min (4.18b)
+  --save-foot FILE     write the fitted foot (HMT unless --model HM) as a foot spec JSON, usable as
+                       `cyclopt-foot --foot FILE` and as the "foot" of a walker job
+  --plot-dir DIR       write fit_{hm,hmt}_ankle.{png,svg} (Fig. 4.3a/4.4a) and
+                       fit_{hm,hmt}_outline.{png,svg} (Fig. 4.3b/4.4b)
+  --json               print the full report as JSON
+Exit codes: 0 fitted and converged, 1 a fit did not converge, 2 bad usage or malformed file.
+)";
+
+constexpr const char* kSynthUsage = R"(usage: cyclopt-foot synth [--preset NAME | --foot FILE.json] --out DIR [options]
+
+Writes synthetic marker trials of a known foot rolling on flat ground (ground truth for
+`cyclopt-foot fit`): markers LMAL and MMAL either side of the ankle, a force column Fz (CSV).
+
+  --trials K          number of trials (default 3); trial k is offset by 0.11 m (k-1), rolls
+                      7% slower per trial and walks 0.02 rad more to the left
+  --rate HZ           sampling rate (default 200)
+  --noise M           standard deviation of each marker coordinate, m (default 0.0005)
+  --offset M          x_off of the first trial, m (default 0.4)
+  --direction RAD     walking direction of the first trial (default 0)
+  --theta T:TH,...    foot-angle history theta_F(t), piecewise linear knots (s:rad); default
+                      -0.35 rad at heel strike, flat at 0.12 s, toe-off at 0.62 s
+  --swing S           seconds of swing before heel strike and after toe-off (default 0)
+  --format trc|csv|both  (default both)
+  --units mm|cm|m     (default mm)
+  --seed N            noise seed (default 1)
+Exit codes: 0 written, 2 bad usage or foot.
+)";
+
+struct Args {
+  int argc;
+  char** argv;
+  int i = 2;
+  bool more() const { return i < argc; }
+  std::string take() { return argv[i++]; }
+  std::string value(const std::string& flag) {
+    if (i >= argc) throw std::invalid_argument(flag + " needs a value");
+    return argv[i++];
+  }
+};
+
+double number(const std::string& flag, const std::string& text) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(v)) throw std::invalid_argument(flag + ": '" + text + "' is not a number");
+  return v;
+}
+
+nlohmann::json fit_json(const ff::FootFitResult& f) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const ff::ParameterEstimate& e : f.estimates) {
+    nlohmann::json p = {{"name", e.name}, {"unit", e.unit}, {"value", e.value}, {"fixed", e.fixed}, {"at_bound", e.at_bound}};
+    p["lower"] = std::isfinite(e.lower) ? nlohmann::json(e.lower) : nlohmann::json(nullptr);
+    p["upper"] = std::isfinite(e.upper) ? nlohmann::json(e.upper) : nlohmann::json(nullptr);
+    p["standard_error"] = std::isfinite(e.standard_error) ? nlohmann::json(e.standard_error) : nlohmann::json(nullptr);
+    params.push_back(p);
+  }
+  nlohmann::json trials = nlohmann::json::array();
+  for (std::size_t k = 0; k < f.trials.size(); ++k)
+    trials.push_back({{"source", f.trials[k].source}, {"samples", f.trials[k].samples}, {"rms", f.trials[k].rms},
+                      {"max", f.trials[k].max}, {"x_off", f.x_off[k]}});
+  nlohmann::json convexity = nlohmann::json::array();
+  for (std::size_t r = 0; r < f.convexity.names.size(); ++r)
+    convexity.push_back({{"condition", f.convexity.names[r]}, {"value", f.convexity.values[r]}});
+  return {{"model", std::string(foot::to_string(f.model))},
+          {"converged", f.converged},
+          {"message", f.message},
+          {"iterations", f.iterations},
+          {"seconds", f.seconds},
+          {"samples", f.samples},
+          {"unknowns", f.unknowns},
+          {"rms", f.rms},
+          {"max_residual", f.max_residual},
+          {"noise_estimate", f.noise_estimate},
+          {"parameters", params},
+          {"trials", trials},
+          {"convex", f.convexity.convex},
+          {"convexity", convexity},
+          {"foot", foot::to_json(f.spec())}};
+}
+
+void print_fit(const ff::FootFitResult& f) {
+  std::printf("%s fit (%s): %s after %d iterations, %.3f s, %d samples, %d unknowns\n", std::string(foot::to_string(f.model)).c_str(),
+              f.model == foot::FootModel::hm ? "eq. 4.16" : "eq. 4.21", f.converged ? "converged" : "NOT CONVERGED",
+              f.iterations, f.seconds, f.samples, f.unknowns);
+  if (!f.converged) std::printf("  solver: %s\n", f.message.c_str());
+  std::printf("  %-8s %14s %12s %12s %12s  %s\n", "param", "value", "std. error", "lower", "upper", "unit");
+  for (const ff::ParameterEstimate& e : f.estimates)
+    std::printf("  %-8s %14.6g %12.3g %12.4g %12.4g  %s%s\n", e.name.c_str(), e.value, e.standard_error, e.lower, e.upper,
+                e.unit.c_str(), e.fixed ? " (fixed)" : e.at_bound ? " (AT BOUND)" : "");
+  std::printf("  residual: RMS %.4f mm, max %.4f mm, noise estimate %.4f mm per coordinate\n", 1e3 * f.rms,
+              1e3 * f.max_residual, 1e3 * f.noise_estimate);
+  for (std::size_t k = 0; k < f.trials.size(); ++k)
+    std::printf("    trial %-28s %5d samples  RMS %.4f mm  max %.4f mm  x_off %.5f m\n", f.trials[k].source.c_str(),
+                f.trials[k].samples, 1e3 * f.trials[k].rms, 1e3 * f.trials[k].max, f.x_off[k]);
+  std::printf("  convexity (eq. %s): %s\n", f.model == foot::FootModel::hm ? "3.21" : "3.24 + toe margin",
+              f.convexity.convex ? "convex" : "NOT CONVEX");
+  for (std::size_t r = 0; r < f.convexity.names.size(); ++r)
+    if (f.convexity.values[r] < 0.0 || (r + 1 == f.convexity.names.size() && f.model == foot::FootModel::hmt))
+      std::printf("    %-44s %12.4g\n", f.convexity.names[r].c_str(), f.convexity.values[r]);
+}
+
+ff::MarkerTrial read_trial(const std::string& path, const std::optional<std::string>& units) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".trc") return ff::read_trc(path);
+  if (ext == ".csv") return ff::read_marker_csv(path, units);
+  throw std::invalid_argument(path + ": unknown file type '" + ext + "' (.trc or .csv)");
+}
+
+}  // namespace
+
+int run_fit_command(int argc, char** argv) {
+  Args a{argc, argv};
+  ff::AnkleTrackOptions track_options;
+  std::vector<std::string> markers, files;
+  std::optional<std::string> units;
+  std::string model = "both", save, plot_dir;
+  bool json = false, toe_bound = true;
+  try {
+    while (a.more()) {
+      const std::string flag = a.take();
+      if (flag == "--help" || flag == "-h") {
+        std::fputs(kFitUsage, stdout);
+        return 0;
+      } else if (flag == "--marker") {
+        markers.push_back(a.value(flag));
+      } else if (flag == "--units") {
+        units = a.value(flag);
+        ff::metres_per_unit(*units);
+      } else if (flag == "--vertical-axis") {
+        const std::string v = a.value(flag);
+        if (v != "x" && v != "y" && v != "z") throw std::invalid_argument("--vertical-axis: '" + v + "' is not x, y or z");
+        track_options.vertical_axis = v[0] - 'x';
+      } else if (flag == "--ground") {
+        track_options.ground_height = number(flag, a.value(flag));
+      } else if (flag == "--direction") {
+        track_options.walking_direction = number(flag, a.value(flag));
+      } else if (flag == "--interval") {
+        const std::string v = a.value(flag);
+        const std::size_t colon = v.find(':');
+        if (colon == std::string::npos) throw std::invalid_argument("--interval: expected T0:T1 in s, got '" + v + "'");
+        track_options.interval = {{number(flag, v.substr(0, colon)), number(flag, v.substr(colon + 1))}};
+      } else if (flag == "--force-column") {
+        track_options.force_column = a.value(flag);
+      } else if (flag == "--force-threshold") {
+        track_options.force_threshold = number(flag, a.value(flag));
+      } else if (flag == "--max-rolling-speed") {
+        track_options.max_rolling_speed = number(flag, a.value(flag));
+        if (!(track_options.max_rolling_speed > 0)) throw std::invalid_argument("--max-rolling-speed: must be > 0 m/s");
+      } else if (flag == "--model") {
+        model = a.value(flag);
+        if (model != "HM" && model != "HMT" && model != "both") throw std::invalid_argument("--model: '" + model + "' is not HM, HMT or both");
+      } else if (flag == "--no-toe-bound") {
+        toe_bound = false;
+      } else if (flag == "--save-foot") {
+        save = a.value(flag);
+      } else if (flag == "--plot-dir") {
+        plot_dir = a.value(flag);
+      } else if (flag == "--json") {
+        json = true;
+      } else if (!flag.empty() && flag[0] == '-') {
+        throw std::invalid_argument("unknown option '" + flag + "'");
+      } else {
+        files.push_back(flag);
+      }
+    }
+    if (files.empty()) throw std::invalid_argument("no trial files given");
+    if (!markers.empty()) track_options.markers = markers;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-foot fit: %s\n%s", e.what(), kFitUsage);
+    return 2;
+  }
+  try {
+    std::vector<ff::AnkleTrack> tracks;
+    for (const std::string& f : files) tracks.push_back(ff::ankle_track(read_trial(f, units), track_options));
+    ff::FootFitOptions options;
+    const ff::CircleFitStart start = ff::circle_fit_start(tracks);
+    if (!toe_bound) {
+      options.hmt_bounds = ff::seed_bounds(foot::FootModel::hmt, start.z_min);
+      options.hmt_bounds->upper[foot::hmt::l_MT] = std::numeric_limits<double>::infinity();
+    }
+    ff::RollingFootFit fit;
+    fit.start = start;
+    fit.hm = ff::fit_hm(tracks, start, options);
+    if (model != "HM") fit.hmt = ff::fit_hmt(tracks, fit.hm, start.z_min, options);
+    std::vector<const ff::FootFitResult*> shown;
+    if (model != "HMT") shown.push_back(&fit.hm);
+    if (model != "HM") shown.push_back(&fit.hmt);
+    if (json) {
+      nlohmann::json out;
+      nlohmann::json tr = nlohmann::json::array();
+      for (const ff::AnkleTrack& t : tracks)
+        tr.push_back({{"source", t.source}, {"samples", t.samples()}, {"first_sample", t.first_sample},
+                      {"last_sample", t.last_sample}, {"rolling_phase", t.phase_rule},
+                      {"walking_direction", t.walking_direction}, {"direction_estimated", t.direction_estimated}});
+      out["trials"] = tr;
+      out["start"] = {{"x_neg", start.heel.centre}, {"R_neg", start.heel.radius}, {"x_pos", start.forefoot.centre},
+                      {"R_pos", start.forefoot.radius}, {"z_min", start.z_min}, {"h_F", start.hm[foot::hm::h_F]},
+                      {"l_HA", start.hm[foot::hm::l_HA]}, {"l_HM", start.hm[foot::hm::l_HM]}};
+      for (const ff::FootFitResult* f : shown) out[f->model == foot::FootModel::hm ? "hm" : "hmt"] = fit_json(*f);
+      std::cout << out.dump(2) << "\n";
+    } else {
+      for (const ff::AnkleTrack& t : tracks)
+        std::printf("trial %s: %d samples in the rolling phase (%s, samples %d-%d), walking direction %.4f rad%s\n",
+                    t.source.c_str(), t.samples(), t.phase_rule.c_str(), t.first_sample, t.last_sample, t.walking_direction,
+                    t.direction_estimated ? " (from the data)" : " (given)");
+      std::printf("start (eq. 4.9-4.12): z_min %.5f m, heel circle x_neg %.5f m R %.5f m (%d points), forefoot circle "
+                  "x_pos %.5f m R %.5f m (%d points)\n",
+                  start.z_min, start.heel.centre, start.heel.radius, start.heel.samples, start.forefoot.centre,
+                  start.forefoot.radius, start.forefoot.samples);
+      for (const ff::FootFitResult* f : shown) print_fit(*f);
+      if (model == "both")
+        std::printf("HMT vs HM: RMS %.4f mm vs %.4f mm (%s)\n", 1e3 * fit.hmt.rms, 1e3 * fit.hm.rms,
+                    fit.hmt.rms <= fit.hm.rms ? "HMT not worse" : "HMT WORSE than HM");
+    }
+    if (!save.empty()) {
+      const ff::FootFitResult& f = model == "HM" ? fit.hm : fit.hmt;
+      const foot::FootSpec spec = f.spec("fitted " + std::string(foot::to_string(f.model)) + " (" + files.front() + ")");
+      foot::validate(spec);
+      std::ofstream out(save);
+      if (!out) throw std::runtime_error(save + ": cannot write the file");
+      out << foot::to_json(spec).dump(2) << "\n";
+      std::fprintf(stderr, "cyclopt-foot fit: wrote %s\n", save.c_str());
+    }
+    if (!plot_dir.empty()) {
+      std::filesystem::create_directories(plot_dir);
+      for (const ff::FootFitResult* f : shown) {
+        const std::string stem = plot_dir + (f->model == foot::FootModel::hm ? "/fit_hm" : "/fit_hmt");
+        for (const char* ext : {".png", ".svg"}) {
+          const plot::Scene ankle = plot::fitted_ankle_scene(tracks, *f);
+          plot::render(ankle, stem + "_ankle" + ext, plot::fitted_options(ankle, 600));
+          const plot::Scene outline = plot::fitted_outline_scene(*f);
+          plot::render(outline, stem + "_outline" + ext, plot::fitted_options(outline, 600));
+        }
+      }
+      std::fprintf(stderr, "cyclopt-foot fit: wrote the figures into %s\n", plot_dir.c_str());
+    }
+    for (const ff::FootFitResult* f : shown)
+      if (!f->converged) return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-foot fit: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
+int run_synth_command(int argc, char** argv) {
+  Args a{argc, argv};
+  std::string preset = "P2-shoes-left-HMT", file, out_dir, format = "both", units = "mm";
+  int trials = 3;
+  ff::SyntheticTrialOptions base;
+  base.noise = 0.0005;
+  base.offset = 0.4;
+  try {
+    while (a.more()) {
+      const std::string flag = a.take();
+      if (flag == "--help" || flag == "-h") {
+        std::fputs(kSynthUsage, stdout);
+        return 0;
+      } else if (flag == "--preset") {
+        preset = a.value(flag);
+      } else if (flag == "--foot") {
+        file = a.value(flag);
+      } else if (flag == "--out") {
+        out_dir = a.value(flag);
+      } else if (flag == "--trials") {
+        const double k = number(flag, a.value(flag));
+        if (k < 1 || k > 100 || k != std::floor(k)) throw std::invalid_argument("--trials: must be an integer in [1, 100]");
+        trials = static_cast<int>(k);
+      } else if (flag == "--rate") {
+        base.rate = number(flag, a.value(flag));
+      } else if (flag == "--noise") {
+        base.noise = number(flag, a.value(flag));
+      } else if (flag == "--offset") {
+        base.offset = number(flag, a.value(flag));
+      } else if (flag == "--direction") {
+        base.walking_direction = number(flag, a.value(flag));
+      } else if (flag == "--swing") {
+        base.swing_time = number(flag, a.value(flag));
+      } else if (flag == "--seed") {
+        base.seed = static_cast<std::uint64_t>(number(flag, a.value(flag)));
+      } else if (flag == "--theta") {
+        const std::string v = a.value(flag);
+        std::size_t start = 0;
+        while (start <= v.size()) {
+          const std::size_t comma = std::min(v.find(',', start), v.size());
+          const std::string knot = v.substr(start, comma - start);
+          const std::size_t colon = knot.find(':');
+          if (colon == std::string::npos) throw std::invalid_argument("--theta: knot '" + knot + "' is not T:THETA");
+          base.foot_angle.push_back({number(flag, knot.substr(0, colon)), number(flag, knot.substr(colon + 1))});
+          start = comma + 1;
+        }
+      } else if (flag == "--format") {
+        format = a.value(flag);
+        if (format != "trc" && format != "csv" && format != "both") throw std::invalid_argument("--format: trc, csv or both");
+      } else if (flag == "--units") {
+        units = a.value(flag);
+        ff::metres_per_unit(units);
+      } else {
+        throw std::invalid_argument("unknown option '" + flag + "'");
+      }
+    }
+    if (out_dir.empty()) throw std::invalid_argument("--out DIR is required");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-foot synth: %s\n%s", e.what(), kSynthUsage);
+    return 2;
+  }
+  try {
+    foot::FootSpec spec;
+    if (!file.empty()) {
+      std::ifstream in(file);
+      if (!in) throw std::runtime_error("cannot read " + file);
+      spec = foot::foot_spec_from_json(nlohmann::json::parse(in));
+    } else {
+      spec = foot::foot_preset(preset).spec;
+    }
+    std::filesystem::create_directories(out_dir);
+    const std::vector<ff::FootAngleKnot> history = base.foot_angle.empty() ? ff::default_foot_angle_history(spec) : base.foot_angle;
+    for (int k = 0; k < trials; ++k) {
+      ff::SyntheticTrialOptions o = base;
+      o.offset = base.offset + 0.11 * k;
+      o.walking_direction = base.walking_direction + 0.02 * k;
+      o.seed = base.seed + static_cast<std::uint64_t>(k);
+      o.foot_angle = history;
+      for (ff::FootAngleKnot& knot : o.foot_angle) knot.t *= 1.0 + 0.07 * k;
+      o.source = "trial" + std::to_string(k + 1);
+      const ff::MarkerTrial t = ff::synthetic_trial(spec, o);
+      const std::string stem = out_dir + "/" + o.source;
+      if (format != "csv") ff::write_trc(t, stem + ".trc", units);
+      if (format != "trc") ff::write_marker_csv(t, stem + ".csv", units);
+      std::printf("%s: %d samples at %.1f Hz, x_off %.4f m, direction %.4f rad, noise %.2g m\n", stem.c_str(), t.samples(),
+                  o.rate, o.offset, o.walking_direction, o.noise);
+    }
+    std::printf("generating foot: %s\n", foot::to_json(spec).dump().c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cyclopt-foot synth: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace cyclopt::client

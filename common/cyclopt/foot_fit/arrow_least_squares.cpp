@@ -1,0 +1,175 @@
+#include "cyclopt/foot_fit/arrow_least_squares.hpp"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cyclopt::foot_fit {
+namespace {
+
+// The blocks of J^T J and J^T r: a_j = |J_l,j|^2, b_j = J_l,j^T J_g,j (row j of B), C = J_g^T J_g.
+struct NormalBlocks {
+  Eigen::VectorXd a, local_gradient, global_gradient;
+  Eigen::MatrixXd B, C;
+};
+
+NormalBlocks normal_blocks(const ArrowEvaluation& ev) {
+  const int n = static_cast<int>(ev.r.cols());
+  const Eigen::Index g = ev.global_jacobian.cols();
+  NormalBlocks nb;
+  nb.a.resize(n);
+  nb.local_gradient.resize(n);
+  nb.B.resize(n, g);
+  for (int j = 0; j < n; ++j) {
+    nb.a[j] = ev.local_jacobian.col(j).squaredNorm();
+    nb.local_gradient[j] = ev.local_jacobian.col(j).dot(ev.r.col(j));
+    nb.B.row(j) = ev.local_jacobian.col(j).transpose() * ev.global_jacobian.middleRows(2 * j, 2);
+  }
+  const Eigen::Map<const Eigen::VectorXd> r_flat(ev.r.data(), 2 * n);
+  nb.global_gradient = ev.global_jacobian.transpose() * r_flat;
+  nb.C = ev.global_jacobian.transpose() * ev.global_jacobian;
+  return nb;
+}
+
+// S = C + lambda D_g - sum_j b_j^T b_j / (a_j + lambda D_l,j), restricted to nothing yet.
+Eigen::MatrixXd schur(const NormalBlocks& nb, const Eigen::VectorXd& local_diag, const Eigen::VectorXd& global_diag,
+                      double lambda, Eigen::VectorXd* rhs) {
+  Eigen::MatrixXd S = nb.C;
+  S.diagonal() += lambda * global_diag;
+  if (rhs) *rhs = -nb.global_gradient;
+  for (Eigen::Index j = 0; j < nb.a.size(); ++j) {
+    const double aj = nb.a[j] + lambda * local_diag[j];
+    if (aj <= 0.0) continue;
+    S.noalias() -= nb.B.row(j).transpose() * nb.B.row(j) / aj;
+    if (rhs) *rhs += nb.B.row(j).transpose() * (nb.local_gradient[j] / aj);
+  }
+  return S;
+}
+
+}  // namespace
+
+ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::VectorXd& global, Eigen::VectorXd& local,
+                                       const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, const ArrowOptions& o) {
+  const Eigen::Index G = global.size(), N = local.size();
+  if (lower.size() != G || upper.size() != G) throw std::invalid_argument("arrow least squares: bounds and globals differ in size");
+  for (Eigen::Index i = 0; i < G; ++i)
+    if (!(lower[i] <= upper[i])) throw std::invalid_argument("arrow least squares: lower bound above upper bound at global " + std::to_string(i));
+  global = global.cwiseMax(lower).cwiseMin(upper);
+  ArrowSummary s;
+  ArrowEvaluation ev, trial;
+  ++s.evaluations;
+  if (!residual(global, local, true, ev)) throw std::invalid_argument("arrow least squares: the start cannot be evaluated");
+  s.initial_cost = s.cost = 0.5 * ev.r.squaredNorm();
+  double lambda = -1.0;
+  s.message = "iteration limit reached";
+  Eigen::Array<bool, Eigen::Dynamic, 1> free(G);
+  for (s.iterations = 0; s.iterations < o.max_iterations; ++s.iterations) {
+    if (s.cost <= o.zero_cost) {
+      s.converged = true;
+      s.message = "residual zero to rounding";
+      break;
+    }
+    const NormalBlocks nb = normal_blocks(ev);
+    for (Eigen::Index i = 0; i < G; ++i)
+      free[i] = lower[i] < upper[i] && !(global[i] <= lower[i] && nb.global_gradient[i] > 0.0) &&
+                !(global[i] >= upper[i] && nb.global_gradient[i] < 0.0);
+    // Marquardt scaling by the diagonal of J^T J, floored so unidentifiable unknowns stay damped.
+    const double largest = std::max(nb.a.size() ? nb.a.maxCoeff() : 0.0, nb.C.size() ? nb.C.diagonal().maxCoeff() : 0.0);
+    const double floor = 1e-12 * std::max(largest, 1e-300);
+    const Eigen::VectorXd dl = nb.a.cwiseMax(floor), dg = nb.C.diagonal().cwiseMax(floor);
+    if (lambda < 0.0) lambda = o.initial_damping;
+    // The step of the damped normal equations at `lam` (projected onto the bounds when
+    // `project`) and the decrease the Gauss-Newton model predicts for it: -(g^T d + 1/2 |J d|^2).
+    struct Step {
+      Eigen::VectorXd global, local;
+      double predicted;
+    };
+    auto step_at = [&](double lam, bool project) {
+      Eigen::VectorXd rhs;
+      const Eigen::MatrixXd S = schur(nb, dl, dg, lam, &rhs);
+      std::vector<Eigen::Index> idx;
+      for (Eigen::Index i = 0; i < G; ++i)
+        if (free[i]) idx.push_back(i);
+      const Eigen::Index F = static_cast<Eigen::Index>(idx.size());
+      Eigen::MatrixXd Sf(F, F);
+      Eigen::VectorXd rf(F);
+      for (Eigen::Index a = 0; a < F; ++a) {
+        rf[a] = rhs[idx[a]];
+        for (Eigen::Index b = 0; b < F; ++b) Sf(a, b) = S(idx[a], idx[b]);
+      }
+      Step st{Eigen::VectorXd::Zero(G), Eigen::VectorXd(N), 0.0};
+      const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(Eigen::LDLT<Eigen::MatrixXd>(Sf).solve(rf)) : Eigen::VectorXd();
+      for (Eigen::Index a = 0; a < F; ++a) st.global[idx[a]] = xf[a];
+      if (project) st.global = (global + st.global).cwiseMax(lower).cwiseMin(upper) - global;
+      for (Eigen::Index j = 0; j < N; ++j)
+        st.local[j] = -(nb.local_gradient[j] + nb.B.row(j).dot(st.global)) / (nb.a[j] + lam * dl[j]);
+      double jd2 = 0.0;
+      for (Eigen::Index j = 0; j < N; ++j)
+        jd2 += (ev.local_jacobian.col(j) * st.local[j] + ev.global_jacobian.middleRows(2 * j, 2) * st.global).squaredNorm();
+      st.predicted = -(nb.global_gradient.dot(st.global) + nb.local_gradient.dot(st.local) + 0.5 * jd2);
+      return st;
+    };
+    // Stationarity: the unprojected Gauss-Newton step in the free unknowns, 1/2 g^T (J^T J)^-1 g,
+    // promises almost nothing (projection could only lower a decrease that is already tiny).
+    const Step gauss_newton = step_at(1e-12, false);
+    if (gauss_newton.global.allFinite() && gauss_newton.local.allFinite() &&
+        gauss_newton.predicted >= 0.0 && gauss_newton.predicted <= o.function_tolerance * s.cost) {
+      s.converged = true;
+      s.message = "Gauss-Newton predicted decrease below function_tolerance * cost";
+      break;
+    }
+    bool accepted = false;
+    while (!accepted) {
+      const Step st = step_at(lambda, true);
+      const Eigen::VectorXd new_global = global + st.global, new_local = local + st.local;
+      const bool valid = st.local.allFinite() && st.global.allFinite();
+      ++s.evaluations;
+      if (valid && residual(new_global, new_local, true, trial) && 0.5 * trial.r.squaredNorm() < s.cost) {
+        const double new_cost = 0.5 * trial.r.squaredNorm();
+        const double step = std::max(st.global.lpNorm<Eigen::Infinity>(), N ? st.local.lpNorm<Eigen::Infinity>() : 0.0);
+        const double size = std::max(global.lpNorm<Eigen::Infinity>(), N ? local.lpNorm<Eigen::Infinity>() : 0.0);
+        const double rho = st.predicted > 0.0 ? (s.cost - new_cost) / st.predicted : 0.0;
+        global = new_global;
+        local = new_local;
+        std::swap(ev, trial);
+        const double old_cost = s.cost;
+        s.cost = new_cost;
+        lambda *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+        accepted = true;
+        if (old_cost - new_cost <= o.function_tolerance * new_cost && st.predicted <= o.function_tolerance * new_cost) {
+          s.converged = true;  // MINPACK's ftol test: neither the step nor its model gains more
+          s.message = "relative decrease below function_tolerance";
+        } else if (step <= o.step_tolerance * (1.0 + size)) {
+          s.converged = true;
+          s.message = "step below step_tolerance";
+        }
+      } else {
+        lambda *= 4.0;
+        if (lambda > o.max_damping) {
+          s.message = "no decrease up to the largest damping";
+          break;
+        }
+      }
+    }
+    if (!accepted || s.converged) {
+      if (s.converged) ++s.iterations;
+      break;
+    }
+  }
+  const NormalBlocks nb = normal_blocks(ev);
+  for (Eigen::Index i = 0; i < G; ++i)
+    free[i] = lower[i] < upper[i] && !(global[i] <= lower[i] && nb.global_gradient[i] > 0.0) &&
+              !(global[i] >= upper[i] && nb.global_gradient[i] < 0.0);
+  s.reduced_normal_matrix = schur(nb, Eigen::VectorXd::Zero(N), Eigen::VectorXd::Zero(G), 0.0, nullptr);
+  for (Eigen::Index i = 0; i < G; ++i)
+    if (!free[i]) {
+      s.reduced_normal_matrix.row(i).setZero();
+      s.reduced_normal_matrix.col(i).setZero();
+    }
+  s.free = free;
+  return s;
+}
+
+}  // namespace cyclopt::foot_fit

@@ -1,0 +1,71 @@
+#include "cyclopt/plot/foot_fit_figures.hpp"
+
+#include "cyclopt/foot/foot_profile.hpp"
+#include "cyclopt/foot/mass_properties.hpp"
+#include "cyclopt/plot/foot_figures.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace cyclopt::plot {
+namespace {
+
+std::string model_name(const foot_fit::FootFitResult& fit) { return std::string(foot::to_string(fit.model)); }
+
+std::pair<double, double> fitted_angle_range(const foot_fit::FootFitResult& fit) {
+  double lo = 1e300, hi = -1e300;
+  for (const Eigen::VectorXd& th : fit.theta) {
+    if (th.size() == 0) continue;
+    lo = std::min(lo, th.minCoeff());
+    hi = std::max(hi, th.maxCoeff());
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+Scene fitted_ankle_scene(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit) {
+  Scene scene;
+  char title[160];
+  std::snprintf(title, sizeof title, "%s fit: ankle of %zu trial(s), RMS %.3f mm (Fig. 4.%da)", model_name(fit).c_str(),
+                tracks.size(), 1e3 * fit.rms, fit.model == foot::FootModel::hm ? 3 : 4);
+  scene.axes = {title, "x - x_off (m)", "ankle height z (m)", true};
+  const Color measured{0.12, 0.47, 0.71, 1}, model{0.17, 0.63, 0.17, 1};
+  for (std::size_t k = 0; k < tracks.size(); ++k)
+    for (int j = 0; j < tracks[k].samples(); ++j) {
+      scene.markers.push_back({tracks[k].x[j] - fit.x_off[k], tracks[k].z[j], measured, 2.5, "measured ankle"});
+      const Eigen::Vector2d m = fit.model_ankle(static_cast<int>(k), j);
+      scene.markers.push_back({m.x() - fit.x_off[k], m.y(), model, 1.5, "model at fitted theta_F"});
+    }
+  // The model's ankle trajectory over the fitted angles, eq. (4.15) / (4.20).
+  const foot::FootProfile<double> prof = foot::make_profile(fit.model, fit.parameters);
+  const double f0 = foot::rolling_contact(prof, 0.0).F;
+  const auto [lo, hi] = fitted_angle_range(fit);
+  Shape curve{{}, model, 1.2, false, false, std::nullopt, "model trajectory"};
+  for (int i = 0; i <= 400; ++i) {
+    const foot::RollingContact<double> c = foot::rolling_contact(prof, lo + (hi - lo) * i / 400.0);
+    curve.points.push_back({c.F - f0, c.dF});
+  }
+  scene.shapes.push_back(curve);
+  scene.ground_z = 0.0;
+  return scene;
+}
+
+Scene fitted_outline_scene(const foot_fit::FootFitResult& fit) {
+  Scene scene = foot_shape_scene(fit.spec("fitted " + model_name(fit)));
+  scene.axes.title = "fitted " + model_name(fit) + ": outline and generating polygon (Fig. 4." +
+                     (fit.model == foot::FootModel::hm ? "3b)" : "4b)");
+  // The part of the outline that touched the ground during the fit (Fig. 4.9).
+  const foot::FootProfile<double> prof = foot::make_profile(fit.model, fit.parameters);
+  const auto [lo, hi] = fitted_angle_range(fit);
+  Shape rolled{{}, Color{0.17, 0.63, 0.17, 1}, 3.5, false, false, std::nullopt, "rolled in the fit"};
+  for (int i = 0; i <= 300; ++i) {
+    const double a = lo + (hi - lo) * i / 300.0;
+    const foot::Vector2<double> c = foot::outline_point(foot::rolling_contact(prof, a), a);
+    rolled.points.push_back({c.x(), c.y()});
+  }
+  scene.shapes.push_back(rolled);
+  return scene;
+}
+
+}  // namespace cyclopt::plot
