@@ -1,8 +1,16 @@
 // cyclopt: command-line client of the cyclopt job server (see kUsage).
+#include "cyclopt/cli/closest_name.hpp"
+#include "cyclopt/cli/exit_codes.hpp"
+#include "cyclopt/cli/usage_text.hpp"
+#include "cyclopt/cli/version.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/giant_swing/model.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
+#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "row_table.hpp"
@@ -36,8 +44,10 @@ results database file directly (read-only) when given --db FILE.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
   status JOB         one job's state, counts and timings
   list [--state S]   jobs (S: queued, running, done, failed, cancelled)
-  query JOB [--what solutions|events|curves|trajectories]
-                     a job's solved points (default) as a table
+  query JOB [--what solutions|events|curves|trajectories] [--wide | --csv | --json]
+                     a job's solved points (default): for walker jobs one line per point
+                     (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
+                     loss, status, curve); --wide / --csv every scalar, --json everything
   export JOB [--out FILE]
                      everything about a job as JSON: spec, events, curves, points, trajectories
   cancel JOB         cancel a queued or running job
@@ -52,15 +62,17 @@ results database file directly (read-only) when given --db FILE.
                      one self-contained HTML page: spec, solved points, all figures
                      (default FILE: jobJOB.html)
 
-Output of status, list, query: aligned table, or --json / --csv.
+Output of status, list, query: aligned table (times in ISO 8601 UTC), or --wide / --csv / --json.
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
 --key-file FILE (sign requests and believe only answers signed with this key; default
-$CYCLOPT_KEY_FILE; README, Authentication).
-Exit codes: 0 ok; 1 bad usage; 2 rejected, not found, or job failed / cancelled;
-3 no answer from the server within the timeout; 4 database or file error.
+$CYCLOPT_KEY_FILE; README, Authentication), --version.
+A spec is checked locally (JSON, then the server's own validation) before it is sent.
 )";
 
-enum Exit { kOk = 0, kUsage_ = 1, kRejected = 2, kNoAnswer = 3, kFileError = 4 };
+namespace cli = cyclopt::cli;
+constexpr int kOk = cli::kExitOk, kRejected = cli::kExitRejected, kNoAnswer = cli::kExitNoAnswer;
+
+const std::vector<std::string> kCommands = {"submit", "watch", "status", "list", "query", "export", "cancel", "plot", "report"};
 
 struct Options {
   std::string command;
@@ -81,6 +93,10 @@ struct UsageError : std::invalid_argument {
 struct NoAnswer : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A spec file or value that is not what the server would accept: found before sending (exit 2).
+struct LocalRejection : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 // A positive integer job id; `what` names where it came from.
 std::int64_t job_id(const std::string& what, const std::string& text) {
@@ -92,6 +108,12 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
   }
   throw UsageError(what + " must be a positive integer job id, got '" + text + "'");
 }
+
+// Every option parse_args() knows, for "did you mean" on a misspelled one.
+const std::vector<std::string> kOptionNames = {
+    "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
+    "--values", "--speeds", "--task", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
   Options o;
@@ -132,7 +154,8 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--watch") o.watch = true;
     else if (a == "--json") o.format = cyclopt::client::RowFormat::json;
     else if (a == "--csv") o.format = cyclopt::client::RowFormat::csv;
-    else if (a.rfind("--", 0) == 0) throw UsageError("unknown option " + a);
+    else if (a == "--wide") o.format = cyclopt::client::RowFormat::wide;
+    else if (a.rfind("--", 0) == 0) throw UsageError("unknown option " + a + cli::did_you_mean(a, kOptionNames));
     else if (o.command.empty()) o.command = a;
     else o.positional.push_back(a);
   }
@@ -155,14 +178,21 @@ std::int64_t job_argument(const Options& o) {
 
 // The spec text of `submit`: the file's, or a foot_sweep built from flags.
 std::string spec_text(const Options& o) {
-  if (!o.spec_file.empty()) return read_file(o.spec_file);
+  if (!o.spec_file.empty()) {
+    const std::string text = read_file(o.spec_file);
+    try {
+      return nlohmann::json::parse(text).dump();
+    } catch (const nlohmann::json::parse_error& e) {
+      throw LocalRejection(o.spec_file + " is not valid JSON (" + e.what() + "); nothing was sent");
+    }
+  }
   const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
   if (o.foot.empty() || (!foot_sweep && o.speeds.empty()))
     throw UsageError("submit needs --spec FILE, or --foot with --sweep and --values, or --foot with --speeds");
   nlohmann::json spec = {{"scene", "walker"}, {"task", foot_sweep ? "foot_sweep" : o.task}};
   std::ifstream foot_file(o.foot);
   spec["foot"] = foot_file ? nlohmann::json::parse(read_file(o.foot), nullptr, false) : nlohmann::json(o.foot);
-  if (spec["foot"].is_discarded()) throw std::runtime_error("--foot " + o.foot + ": not valid JSON");
+  if (spec["foot"].is_discarded()) throw LocalRejection("--foot " + o.foot + ": not valid JSON");
   if (foot_sweep)
     spec["sweep"] = {{"parameter", o.sweep}, {"values", o.values}};
   else
@@ -226,7 +256,10 @@ class Session {
   std::optional<cyclopt::client::ServiceClient> client_;
 };
 
-int exit_for_state(const std::string& state) { return state == "done" ? kOk : kRejected; }
+int exit_for_state(const std::string& state) {
+  if (state == "done") return kOk;
+  return state == "incomplete" ? cyclopt::cli::kExitIncomplete : kRejected;
+}
 
 std::string eta_text(double seconds) {
   if (!std::isfinite(seconds)) return "?";
@@ -252,14 +285,39 @@ int watch(Session& s, const Options& o, std::int64_t job_id) {
     std::fprintf(stderr, "cyclopt: job %lld did not finish within %.0f s\n", static_cast<long long>(job_id), o.watch_timeout);
     return kNoAnswer;
   }
-  std::printf("job %lld %s: %d points stored, %.3f s (progress publication %.6f s)%s%s\n",
-              static_cast<long long>(job_id), done->state.c_str(), done->points_stored, done->run_seconds,
-              done->publish_seconds, done->error.empty() ? "" : ", error: ", done->error.c_str());
+  std::string converged;
+  if (done->points_converged >= 0)
+    converged = ", " + std::to_string(done->points_converged) + " of " + std::to_string(done->points_expected) + " converged";
+  std::printf("job %lld %s: %d points stored%s, %.3f s (progress publication %.6f s)%s%s\n",
+              static_cast<long long>(job_id), done->state.c_str(), done->points_stored, converged.c_str(),
+              done->run_seconds, done->publish_seconds, done->error.empty() ? "" : "; ", done->error.c_str());
   return exit_for_state(done->state);
+}
+
+// The server's own validation (service::validate_job_spec), run before sending: a bad spec is
+// rejected naming the field even when no server is reachable; a misspelled foot preset gets a
+// suggestion.
+void validate_locally(const std::string& spec_json) {
+  const nlohmann::json spec = nlohmann::json::parse(spec_json);
+  try {
+    cyclopt::service::validate_job_spec(spec, cyclopt::service::builtin_job_kinds());
+  } catch (const cyclopt::service::SpecError& e) {
+    std::string hint;
+    if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {
+      std::vector<std::string> presets;
+      for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) {
+        presets.push_back(p.name);
+        if (!p.alias.empty()) presets.push_back(p.alias);
+      }
+      hint = cli::did_you_mean(spec["foot"].get<std::string>(), presets);
+    }
+    throw LocalRejection("rejected before sending (field " + e.field() + "): " + e.what() + hint);
+  }
 }
 
 int submit(Session& s, const Options& o) {
   const std::string spec = spec_text(o);
+  validate_locally(spec);
   const std::string id = o.request_id.empty() ? cyclopt::client::new_request_id() : o.request_id;
   const auto ack = s.remote().submit(id, spec, o.timeout);
   if (!ack) {
@@ -336,8 +394,14 @@ int plot(Session& s, const Options& o) {
     std::vector<cyclopt::plot::WalkerJobResults> jobs;
     for (std::int64_t id : o.jobs) jobs.push_back(cyclopt::plot::walker_job_results(job_document(s, id)));
     for (const std::string& f : o.from) jobs.push_back(cyclopt::plot::walker_job_results(nlohmann::json::parse(read_file(f))));
-    if (kind == "all") figures = cyclopt::plot::walker_figures(jobs, o.speed);
-    else figures.push_back(cyclopt::plot::walker_figure(kind, jobs, o.speed));
+    if (kind == "all") {
+      std::vector<std::string> not_drawn;
+      figures = cyclopt::plot::walker_figures(jobs, o.speed, &not_drawn);
+      for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
+      if (figures.empty()) throw std::invalid_argument("plot all: nothing to draw");
+    } else {
+      figures.push_back(cyclopt::plot::walker_figure(kind, jobs, o.speed));
+    }
   }
   for (const cyclopt::plot::Figure& f : figures) {
     const std::vector<std::string> paths = cyclopt::plot::write_figure(f, dir);
@@ -371,22 +435,33 @@ int run(const Options& o) {
     cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows, o.format);
     return kOk;
   }
-  throw UsageError(o.command.empty() ? "no command given" : "unknown command '" + o.command + "'");
+  throw UsageError(o.command.empty() ? "no command given"
+                                     : "unknown command '" + o.command + "'" + cli::did_you_mean(o.command, kCommands));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
+      std::fputs(cli::kExitCodeTable, stdout);
       return kOk;
     }
+    if (a == "--version") {
+      std::printf("%s\n", cli::version_text("cyclopt").c_str());
+      return kOk;
+    }
+  }
   try {
     return run(parse_args(argc, argv));
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "cyclopt: %s\n%s", e.what(), kUsage);
-    return kUsage_;
+    std::fputs(cli::short_usage("cyclopt", e.what(), kUsage).c_str(), stderr);
+    return cli::kExitUsage;
+  } catch (const LocalRejection& e) {
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kRejected;
   } catch (const NoAnswer& e) {
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
     return kNoAnswer;
@@ -398,6 +473,6 @@ int main(int argc, char** argv) {
     return kRejected;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
-    return kFileError;
+    return cli::kExitResource;
   }
 }

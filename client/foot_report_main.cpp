@@ -1,5 +1,9 @@
 // cyclopt-foot: describe a foot geometry (seed 001, ch. 3 and appendix E) from a preset or a
 // JSON spec: parameters, admissible angles, mass properties and the rolling kinematics.
+#include "cyclopt/cli/closest_name.hpp"
+#include "cyclopt/cli/exit_codes.hpp"
+#include "cyclopt/cli/usage_text.hpp"
+#include "cyclopt/cli/version.hpp"
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
@@ -10,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -39,12 +44,25 @@ while the foot rolls. Units are SI (m, rad, kg, kg/m^2).
   --json          print the full report as JSON instead of a table
   --plot-dir DIR  also write foot_shape.{png,svg} (Fig. 3.5a) and ankle_trajectory.{png,svg}
                   (Fig. 3.5b) into DIR
-Exit codes: 0 ok, 2 bad usage or invalid foot spec, 3 unreadable file.
+  --version       print the version and git revision
 )";
 
 int usage_error(const std::string& message) {
-  std::fprintf(stderr, "cyclopt-foot: %s\n%s", message.c_str(), kUsage);
-  return 2;
+  std::fputs(cyclopt::cli::short_usage("cyclopt-foot", message, kUsage).c_str(), stderr);
+  return cyclopt::cli::kExitUsage;
+}
+
+// The preset of that name; an unknown one is rejected with the known names and the nearest.
+const cyclopt::foot::FootPreset& preset_named(const std::string& name) {
+  std::vector<std::string> names;
+  for (const cyclopt::foot::FootPreset& p : cyclopt::foot::foot_presets()) {
+    names.push_back(p.name);
+    if (!p.alias.empty()) names.push_back(p.alias);
+  }
+  if (std::find(names.begin(), names.end(), name) == names.end() && cyclopt::cli::closest_name(name, names))
+    throw std::invalid_argument("--preset: unknown foot '" + name + "'" + cyclopt::cli::did_you_mean(name, names) +
+                                "; cyclopt-foot --list-presets lists them");
+  return cyclopt::foot::foot_preset(name);
 }
 
 void print_table(const nlohmann::json& r) {
@@ -105,6 +123,10 @@ int main(int argc, char** argv) {
       };
       if (a == "--help" || a == "-h") {
         std::fputs(kUsage, stdout);
+        std::fputs(cyclopt::cli::kExitCodeTable, stdout);
+        return 0;
+      } else if (a == "--version") {
+        std::printf("%s\n", cyclopt::cli::version_text("cyclopt-foot").c_str());
         return 0;
       } else if (a == "--list-presets") {
         list = true;
@@ -152,11 +174,11 @@ int main(int argc, char** argv) {
       std::ifstream in(file);
       if (!in) {
         std::fprintf(stderr, "cyclopt-foot: cannot read %s\n", file.c_str());
-        return 3;
+        return cyclopt::cli::kExitResource;
       }
       spec = foot_spec_from_json(nlohmann::json::parse(in));
     } else {
-      spec = foot_preset(preset).spec;
+      spec = preset_named(preset).spec;
       spec.density = 36.9;  // section 10.2's density of the P2 foot
     }
     if (density) spec.density = *density;
@@ -176,10 +198,10 @@ int main(int argc, char** argv) {
     }
   } catch (const nlohmann::json::parse_error& e) {
     std::fprintf(stderr, "cyclopt-foot: %s is not valid JSON: %s\n", file.c_str(), e.what());
-    return 2;
+    return cyclopt::cli::kExitRejected;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cyclopt-foot: %s\n", e.what());
-    return 2;
+    return cyclopt::cli::kExitRejected;
   }
   return 0;
 }

@@ -1,5 +1,8 @@
 // cyclopt-giant-swing: runs one of the giant-swing tasks of seed 000 (ch. 5) with the seed's method
 // (piecewise-linear hip torque, multistage Nelder-Mead) and prints the result as JSON.
+#include "cyclopt/cli/exit_codes.hpp"
+#include "cyclopt/cli/usage_text.hpp"
+#include "cyclopt/cli/version.hpp"
 #include "cyclopt/giant_swing/seed_optimiser.hpp"
 #include "cyclopt/giant_swing/task_spec.hpp"
 
@@ -22,12 +25,17 @@ tables, integrals, support values, model integrations, wall time).
   --preset KIND   single_swing, periodic_sequence, accelerating or decelerating with the
                   seed's settings
   --print-spec    print the validated spec (with defaults filled in) and exit
-Exit codes: 0 ok, 2 bad usage or invalid task spec, 3 unreadable file.
+  --version       print the version and git revision
 )";
 
 int usage_error(const std::string& message) {
-  std::fprintf(stderr, "cyclopt-giant-swing: %s\n%s", message.c_str(), kUsage);
-  return 2;
+  std::fputs(cyclopt::cli::short_usage("cyclopt-giant-swing", message, kUsage).c_str(), stderr);
+  return cyclopt::cli::kExitUsage;
+}
+
+int invalid_input(const std::string& message) {
+  std::fprintf(stderr, "cyclopt-giant-swing: %s\n", message.c_str());
+  return cyclopt::cli::kExitRejected;
 }
 
 }  // namespace
@@ -44,6 +52,10 @@ int main(int argc, char** argv) {
       print_spec = true;
     } else if (arg == "--help" || arg == "-h") {
       std::fputs(kUsage, stdout);
+      std::fputs(cyclopt::cli::kExitCodeTable, stdout);
+      return 0;
+    } else if (arg == "--version") {
+      std::printf("%s\n", cyclopt::cli::version_text("cyclopt-giant-swing").c_str());
       return 0;
     } else {
       return usage_error("unknown or incomplete argument '" + arg + "'");
@@ -55,12 +67,12 @@ int main(int argc, char** argv) {
     std::ifstream in(task_file);
     if (!in) {
       std::fprintf(stderr, "cyclopt-giant-swing: cannot read %s\n", task_file.c_str());
-      return 3;
+      return cyclopt::cli::kExitResource;
     }
     try {
       j = nlohmann::json::parse(in);
     } catch (const nlohmann::json::parse_error& e) {
-      return usage_error(task_file + " is not valid JSON: " + e.what());
+      return invalid_input(task_file + " is not valid JSON: " + e.what());
     }
   } else {
     j = {{"task", preset}};
@@ -69,7 +81,7 @@ int main(int argc, char** argv) {
   try {
     spec = task_spec_from_json(j);
   } catch (const TaskSpecError& e) {
-    return usage_error(std::string("invalid task spec: ") + e.what());
+    return invalid_input(std::string("invalid task spec: ") + e.what());
   }
   if (print_spec) {
     std::cout << to_json(spec).dump(2) << "\n";

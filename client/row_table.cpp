@@ -1,7 +1,11 @@
 #include "row_table.hpp"
 
+#include "point_table.hpp"
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -13,12 +17,20 @@ namespace {
 const std::vector<std::string> kLeadingColumns = {"id", "curve", "point", "parameter", "objective",
                                                   "constraint_violation", "state", "task", "at", "kind"};
 
-// Columns in order of first appearance, with "values" members spliced in.
-nlohmann::json flatten(const nlohmann::json& row) {
-  nlohmann::json flat = nlohmann::json::object();
+// Columns in order of first appearance, with "values" members spliced in, and the scalars of
+// their objects as "member.key" (gait.step_length, solver.iterations, ...).
+nlohmann::ordered_json flatten(const nlohmann::json& row) {
+  nlohmann::ordered_json flat = nlohmann::ordered_json::object();
   for (const auto& [key, value] : row.items()) {
     if (key == "values" && value.is_object()) {
-      for (const auto& [k, v] : value.items()) flat[k] = v;
+      for (const auto& [k, v] : value.items()) {
+        if (!v.is_object()) {
+          if (!v.is_array()) flat[k] = v;
+          continue;
+        }
+        for (const auto& [sub, x] : v.items())
+          if (!x.is_structured()) flat[k + "." + sub] = x;
+      }
     } else if (!value.is_structured()) {
       flat[key] = value;
     }
@@ -26,12 +38,27 @@ nlohmann::json flatten(const nlohmann::json& row) {
   return flat;
 }
 
-std::string cell(const nlohmann::json& v) {
+// Timestamps (submitted_at, finished_at, at, solved_at, ...: Unix seconds) as ISO 8601 UTC.
+bool is_time_column(const std::string& column) {
+  return column == "at" || (column.size() > 3 && column.compare(column.size() - 3, 3, "_at") == 0);
+}
+
+std::string iso_time(double unix_seconds) {
+  const std::time_t t = static_cast<std::time_t>(std::floor(unix_seconds));
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return b;
+}
+
+std::string cell(const std::string& column, const nlohmann::ordered_json& v, const char* float_format) {
   if (v.is_null()) return "";
   if (v.is_string()) return v.get<std::string>();
+  if (v.is_number() && is_time_column(column)) return iso_time(v.get<double>());
   if (v.is_number_float()) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v.get<double>());
+    std::snprintf(buf, sizeof buf, float_format, v.get<double>());
     return buf;
   }
   return v.dump();
@@ -44,6 +71,48 @@ std::string csv_cell(const std::string& s) {
   return q + "\"";
 }
 
+struct Grid {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> cells;
+};
+
+Grid grid_of(const std::vector<nlohmann::ordered_json>& rows, const std::vector<std::string>& leading,
+             const char* float_format) {
+  Grid g;
+  for (const auto& c : leading)
+    for (const auto& row : rows)
+      if (row.contains(c)) {
+        g.columns.push_back(c);
+        break;
+      }
+  for (const auto& row : rows)
+    for (const auto& [key, value] : row.items())
+      if (std::find(g.columns.begin(), g.columns.end(), key) == g.columns.end()) g.columns.push_back(key);
+  for (const auto& row : rows) {
+    std::vector<std::string> line;
+    for (const auto& c : g.columns) line.push_back(row.contains(c) ? cell(c, row[c], float_format) : "");
+    g.cells.push_back(std::move(line));
+  }
+  return g;
+}
+
+void print_aligned(std::ostream& out, const Grid& g, std::size_t max_width) {
+  std::vector<std::size_t> width;
+  for (const auto& c : g.columns) width.push_back(std::min(c.size(), max_width));
+  for (const auto& line : g.cells)
+    for (std::size_t i = 0; i < line.size(); ++i) width[i] = std::max(width[i], std::min(line[i].size(), max_width));
+  auto print_line = [&](const std::vector<std::string>& line) {
+    std::string text;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const std::string s = line[i].substr(0, max_width);
+      text += (i ? "  " : "") + s + std::string(width[i] - s.size(), ' ');
+    }
+    out << text.substr(0, text.find_last_not_of(' ') + 1) << "\n";
+  };
+  print_line(g.columns);
+  for (const auto& line : g.cells) print_line(line);
+}
+
 }  // namespace
 
 void print_rows(std::ostream& out, const nlohmann::json& rows, RowFormat format) {
@@ -51,47 +120,28 @@ void print_rows(std::ostream& out, const nlohmann::json& rows, RowFormat format)
     out << rows.dump(2) << "\n";
     return;
   }
-  std::vector<std::string> columns;
-  std::vector<nlohmann::json> flat;
-  for (const auto& c : kLeadingColumns)
+  if (format == RowFormat::table && !rows.empty()) {
+    std::vector<nlohmann::ordered_json> points;
     for (const auto& row : rows)
-      if (row.contains(c)) {
-        columns.push_back(c);
-        break;
-      }
-  for (const auto& row : rows) {
-    flat.push_back(flatten(row));
-    for (const auto& [key, value] : flat.back().items())
-      if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+      if (const auto s = point_summary(row)) points.push_back(*s);
+    if (points.size() == rows.size()) {
+      print_aligned(out, grid_of(points, {}, "%.5g"), 40);
+      return;
+    }
   }
-  std::vector<std::vector<std::string>> cells;
-  for (const auto& f : flat) {
-    std::vector<std::string> line;
-    for (const auto& c : columns) line.push_back(f.contains(c) ? cell(f[c]) : "");
-    cells.push_back(std::move(line));
-  }
+  std::vector<nlohmann::ordered_json> flat;
+  for (const auto& row : rows) flat.push_back(flatten(row));
+  const Grid g = grid_of(flat, kLeadingColumns, "%.10g");
   if (format == RowFormat::csv) {
-    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csv_cell(columns[i]);
+    for (std::size_t i = 0; i < g.columns.size(); ++i) out << (i ? "," : "") << csv_cell(g.columns[i]);
     out << "\n";
-    for (const auto& line : cells) {
+    for (const auto& line : g.cells) {
       for (std::size_t i = 0; i < line.size(); ++i) out << (i ? "," : "") << csv_cell(line[i]);
       out << "\n";
     }
     return;
   }
-  std::vector<std::size_t> width;
-  for (const auto& c : columns) width.push_back(c.size());
-  for (const auto& line : cells)
-    for (std::size_t i = 0; i < line.size(); ++i) width[i] = std::max(width[i], std::min<std::size_t>(line[i].size(), 40));
-  auto print_line = [&](const std::vector<std::string>& line) {
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      std::string s = line[i].substr(0, 40);
-      out << (i ? "  " : "") << s << std::string(width[i] - s.size(), ' ');
-    }
-    out << "\n";
-  };
-  print_line(columns);
-  for (const auto& line : cells) print_line(line);
+  print_aligned(out, g, format == RowFormat::wide ? 80 : 40);
 }
 
 }  // namespace cyclopt::client

@@ -1,7 +1,9 @@
 #pragma once
-// Printing query rows (JSON objects) as an aligned table, CSV or JSON. Nested "values" objects
-// (a solution's per-kind results) become columns of their own; other nested data is dropped
-// from tables and CSV.
+// Printing query rows (JSON objects) as an aligned table, CSV or JSON. Walker solutions print as
+// one line per point with the quantities users look for first (point_table.hpp); other rows, and
+// every row with `wide`, as one column per scalar, nested "values" objects spliced in as columns
+// of their own (other nested data is left to JSON). Times (columns "at", "..._at") print as ISO
+// 8601 UTC in tables and CSV; JSON keeps Unix seconds.
 
 #include <nlohmann/json.hpp>
 
@@ -9,7 +11,7 @@
 
 namespace cyclopt::client {
 
-enum class RowFormat { table, csv, json };
+enum class RowFormat { table, wide, csv, json };
 
 void print_rows(std::ostream& out, const nlohmann::json& rows, RowFormat format);
 

@@ -186,6 +186,8 @@ std::optional<cyclopt_lcm::job_done_t> ServiceClient::watch(
       d.run_seconds = j["run_seconds"];
       d.publish_seconds = j["publish_seconds"];
       d.error = j["error"];
+      d.points_expected = j["points_total"].is_number() ? j["points_total"].get<int>() : -1;
+      d.points_converged = j["points_converged"].is_number() ? j["points_converged"].get<int>() : -1;
       result = d;
     }
   }

@@ -35,7 +35,11 @@ cat > "$OUT/sweep.json" <<SPEC
  "foot": $FOOT_JSON, "speeds": "$SPEEDS", "objective": "f_mech",
  "multistart": {"starts": ${STARTS:-2}}, "continuation": {"seed_speeds": ${SPEEDS%%:*}}}
 SPEC
-"$BUILD/client/cyclopt" submit --spec "$OUT/sweep.json" --watch
+# An incomplete job (exit 5: some speeds without a converged gait) still gets its table, pictures
+# and report; the script then ends with that exit code.
+OUTCOME=0
+"$BUILD/client/cyclopt" submit --spec "$OUT/sweep.json" --watch || OUTCOME=$?
+[ "$OUTCOME" -eq 0 ] || [ "$OUTCOME" -eq 5 ] || exit "$OUTCOME"
 JOB=$("$BUILD/client/cyclopt" list --json | grep -o '"id": [0-9]*' | tail -1 | grep -o '[0-9]*')
 "$BUILD/client/cyclopt" query "$JOB"
 echo "database: $OUT/cyclopt.db (read it with: $BUILD/client/cyclopt query $JOB --db $OUT/cyclopt.db)"
@@ -46,3 +50,5 @@ if [ "${GIANT_SWING:-1}" != 0 ]; then
   "$BUILD/client/cyclopt" plot giant-swing --result out/giant_swing.json --out "$PICTURES"
 fi
 echo "pictures: $PICTURES/*.png (SVG beside each); report: out/report.html (one self-contained page)"
+[ "$OUTCOME" -eq 0 ] || echo "the job ended incomplete (exit $OUTCOME): see the outcome above and in the report"
+exit "$OUTCOME"

@@ -4,8 +4,11 @@
 //
 //   cyclopt-worker --unit DIR
 //
-// Exit codes: 0 the kind returned (done.json says whether it stopped early or failed),
-// 1 bad usage, 2 the unit could not be read or written.
+// Exit codes (cli/exit_codes.hpp): 0 the kind returned (done.json says whether it stopped early
+// or failed), 1 bad usage, 4 the unit could not be read or written.
+#include "cyclopt/cli/exit_codes.hpp"
+#include "cyclopt/cli/usage_text.hpp"
+#include "cyclopt/cli/version.hpp"
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "remote/file_job_context.hpp"
 
@@ -18,9 +21,18 @@
 
 int main(int argc, char** argv) {
   using namespace cyclopt;
+  constexpr const char* kUsage = "usage: cyclopt-worker --unit DIR | --version\n";
+  if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
+    std::printf("%s\n", cli::version_text("cyclopt-worker").c_str());
+    return cli::kExitOk;
+  }
+  if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+    std::printf("%s%s", kUsage, cli::kExitCodeTable);
+    return cli::kExitOk;
+  }
   if (argc != 3 || std::strcmp(argv[1], "--unit") != 0) {
-    std::fputs("usage: cyclopt-worker --unit DIR\n", stderr);
-    return 1;
+    std::fputs(cli::short_usage("cyclopt-worker", "expected --unit DIR", kUsage).c_str(), stderr);
+    return cli::kExitUsage;
   }
   const server::remote::UnitSpool spool(argv[2]);
   try {
@@ -45,6 +57,6 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cyclopt-worker: %s\n", e.what());
-    return 2;
+    return cli::kExitResource;
   }
 }

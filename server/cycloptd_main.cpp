@@ -1,4 +1,7 @@
 // cycloptd: the cyclopt job server (usage: server_config.hpp, kServerUsage).
+#include "cyclopt/cli/exit_codes.hpp"
+#include "cyclopt/cli/usage_text.hpp"
+#include "cyclopt/cli/version.hpp"
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "server.hpp"
 #include "server_config.hpp"
@@ -18,17 +21,23 @@ extern "C" void on_signal(int) { g_stop = true; }
 int main(int argc, char** argv) {
   using namespace cyclopt;
   std::vector<std::string> args(argv + 1, argv + argc);
-  for (const auto& a : args)
+  for (const auto& a : args) {
     if (a == "--help" || a == "-h") {
       std::fputs(server::kServerUsage, stdout);
-      return 0;
+      std::fputs(cli::kExitCodeTable, stdout);
+      return cli::kExitOk;
     }
+    if (a == "--version") {
+      std::printf("%s\n", cli::version_text("cycloptd").c_str());
+      return cli::kExitOk;
+    }
+  }
   server::ServerConfig config;
   try {
     config = server::server_config_from_args(args);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "cycloptd: %s\n%s", e.what(), server::kServerUsage);
-    return 1;
+    std::fputs(cli::short_usage("cycloptd", e.what(), server::kServerUsage).c_str(), stderr);
+    return cli::kExitUsage;
   }
   if (config.executor == "slurm" && config.slurm.worker.empty())
     config.slurm.worker = (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "cyclopt-worker").string();
@@ -42,7 +51,7 @@ int main(int argc, char** argv) {
   lcm::LCM lcm(config.lcm_url);
   if (!lcm.good()) {
     std::fprintf(stderr, "cycloptd: cannot open LCM at '%s'\n", config.lcm_url.c_str());
-    return 2;
+    return cli::kExitResource;
   }
   const service::JobKindRegistry kinds = service::builtin_job_kinds();
   try {
@@ -68,7 +77,7 @@ int main(int argc, char** argv) {
                    d->datagrams, d->messages, d->malformed, d->oversize, d->dropped_assemblies);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cycloptd: %s\n", e.what());
-    return 2;
+    return cli::kExitResource;
   }
   std::fprintf(stderr, "cycloptd: stopped cleanly\n");
   return 0;

@@ -87,6 +87,7 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
   }
   if (!ctx.store_error().empty()) return requeue_after_store_failure(job, ctx);
   storage::JobState state = storage::JobState::done;
+  std::optional<storage::JobOutcome> outcome;
   if (!error.empty()) {
     state = storage::JobState::failed;
   } else if (stop == service::StopReason::cancelled) {
@@ -104,7 +105,13 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
       store_.return_to_queue(job.id, ctx.unrecorded_seconds(), ctx.publish_seconds(), "server shutdown; resumes at next start");
       return;
     }
-    store_.finish(job.id, state, error, ctx.unrecorded_seconds(), ctx.publish_seconds());
+    if (state == storage::JobState::done) {  // ran to its end: judged by what it stored
+      outcome = storage::judge_job_outcome(store_.required_points(job.id), store_.job(job.id)->points_total);
+      state = outcome->state;
+      error = outcome->summary;
+    }
+    store_.finish(job.id, state, error, ctx.unrecorded_seconds(), ctx.publish_seconds(),
+                  outcome ? std::optional<int>(outcome->converged) : std::nullopt);
   } catch (const storage::StorageError& e) {
     // The row still says running: the next start re-queues it (recover_interrupted).
     pause_claims();
@@ -113,7 +120,7 @@ void WorkerPool::run_job(const storage::JobRecord& job) {
                      "); it stays in the database as interrupted and is re-queued when the server restarts");
     return;
   }
-  publish_done(job, ctx, state, error);
+  publish_done(job, ctx, state, error, outcome);
 }
 
 void WorkerPool::requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx) {
@@ -135,7 +142,7 @@ void WorkerPool::pause_claims() {
 }
 
 void WorkerPool::publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
-                              const std::string& error) {
+                              const std::string& error, const std::optional<storage::JobOutcome>& outcome) {
   cyclopt_lcm::job_done_t done;
   done.job_id = job.id;
   done.request_id = job.request_id;
@@ -144,6 +151,8 @@ void WorkerPool::publish_done(const storage::JobRecord& job, WorkerJobContext& c
   done.run_seconds = job.run_seconds + ctx.elapsed_seconds();
   done.publish_seconds = ctx.publish_seconds();
   done.error = error;
+  done.points_expected = outcome ? outcome->expected : -1;
+  done.points_converged = outcome ? outcome->converged : -1;
   publisher_.publish(channels::kDone, done);
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // One thread per worker. Each claims the oldest queued job from the store, runs it through the
 // executor (job_executor.hpp: on this thread, or on Slurm) with a WorkerJobContext and records
-// the outcome: done, failed (exception or limit), cancelled, or back to queued when the server
+// the outcome: done, incomplete or failed as judged from its required points (storage/job_outcome.hpp),
+// failed (exception or limit), cancelled, or back to queued when the server
 // shuts down or a point could not be stored (a full disk): its stored points are kept and it
 // resumes later; its watchers get a job_done_t with state "queued" saying why. After a storage
 // failure no job is claimed for kStoreFailurePause.
 
 #include "job_executor.hpp"
+#include "cyclopt/storage/job_outcome.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
 #include "server_config.hpp"
@@ -39,7 +41,7 @@ class WorkerPool {
   void run_job(const storage::JobRecord& job);
   void requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx);
   void publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
-                    const std::string& error);
+                    const std::string& error, const std::optional<storage::JobOutcome>& outcome = std::nullopt);
   void pause_claims();
   bool claims_paused();
 

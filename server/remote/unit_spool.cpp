@@ -74,6 +74,7 @@ nlohmann::json point_to_json(const storage::SolutionPoint& p) {
                    {"constraint_violation", p.constraint_violation},
                    {"iterations", p.iterations},
                    {"status", p.status},
+                   {"required", p.required},
                    {"values", p.values}};
   if (p.trajectory) j["trajectory"] = *p.trajectory;
   return j;
@@ -87,6 +88,7 @@ storage::SolutionPoint point_from_json(const nlohmann::json& j) {
   p.constraint_violation = number_or_nan(j, "constraint_violation");
   p.iterations = j.at("iterations").get<int>();
   p.status = j.at("status").get<std::string>();
+  p.required = j.at("required").get<bool>();
   p.values = j.at("values");
   if (j.contains("trajectory")) p.trajectory = j.at("trajectory");
   return p;

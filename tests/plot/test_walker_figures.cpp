@@ -317,5 +317,58 @@ TEST_F(WalkerFigures, CommandLinePlotsAndReportsFromADatabase) {
   EXPECT_EQ(WEXITSTATUS(std::system((cli + " plot all 2> /dev/null").c_str())), 1);
 }
 
+// Issue 17 item 4: `cyclopt query` prints one readable line per point with the quantities users
+// look for first; --wide, --csv and --json carry the rest; times are ISO 8601.
+TEST_F(WalkerFigures, QueryPrintsOneReadableLinePerPoint) {
+  const fs::path dir = out_dir() / "query";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string db = (dir / "results.db").string();
+  {
+    storage::ResultStore store(db);
+    const storage::SubmitOutcome s = store.submit("req-q", "walker", "sweep", point_feet_->spec.dump());
+    for (const storage::SolutionPoint& p : point_feet_->points) store.store_point(s.job_id, p);
+    store.finish(s.job_id, storage::JobState::done, "", 1.5, 0.0, 3);
+  }
+  const std::string cli = std::string(CYCLOPT_CLI) + " --db " + db;
+  auto output = [&](const std::string& args, const std::string& name) {
+    const fs::path file = dir / name;
+    EXPECT_EQ(std::system((cli + " " + args + " > " + file.string()).c_str()), 0) << args;
+    std::vector<std::string> lines;
+    std::istringstream in(text_of(file));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  const std::vector<std::string> table = output("query 1", "table.txt");
+  ASSERT_EQ(table.size(), 1 + point_feet_->points.size());
+  for (const char* column : {"speed_m_s", "f_mech", "step_length_m", "period_s", "cadence_1_min", "floquet",
+                             "impact_loss_J", "status", "curve"})
+    EXPECT_NE(table[0].find(column), std::string::npos) << column << " missing from: " << table[0];
+  for (const std::string& line : table) EXPECT_LT(line.size(), 140u) << line;
+  // The line of the 1.0 m/s point shows its step length and cadence = 60 / period.
+  const nlohmann::json& g = point_feet_->points[1].values["gait"];
+  char step[32], cadence[32];
+  std::snprintf(step, sizeof step, "%.5g", g["step_length"].get<double>());
+  std::snprintf(cadence, sizeof cadence, "%.5g", 60.0 / g["step_period"].get<double>());
+  EXPECT_NE(table[2].find(step), std::string::npos) << table[2];
+  EXPECT_NE(table[2].find(cadence), std::string::npos) << table[2];
+  const std::vector<std::string> wide = output("query 1 --wide", "wide.txt");
+  EXPECT_NE(wide[0].find("gait.step_length"), std::string::npos) << wide[0];
+  EXPECT_NE(wide[0].find("solved_at"), std::string::npos) << wide[0];
+  const std::vector<std::string> csv = output("query 1 --csv", "table.csv");
+  EXPECT_NE(csv[0].find("gait.floquet_multiplier"), std::string::npos) << csv[0];
+  output("query 1 --json", "table.json");
+  EXPECT_EQ(nlohmann::json::parse(text_of(dir / "table.json")).size(), point_feet_->points.size());
+  const std::vector<std::string> jobs = output("list", "jobs.txt");
+  ASSERT_EQ(jobs.size(), 2u);
+  const std::size_t at = jobs[0].find("submitted_at");
+  ASSERT_NE(at, std::string::npos);
+  const std::string submitted = jobs[1].substr(at, 20);
+  EXPECT_EQ(submitted.size(), 20u);
+  EXPECT_EQ(submitted[4], '-');
+  EXPECT_EQ(submitted[10], 'T');
+  EXPECT_EQ(submitted[19], 'Z') << jobs[1];
+}
+
 }  // namespace
 }  // namespace cyclopt::plot

@@ -2,7 +2,7 @@
 # Database faults with the real cycloptd (issue 19, acceptance 4), inside a private network and
 # mount namespace this script creates (unshare -n -m), so neither LCM datagrams nor the mounts
 # reach the host:
-#   1. a read-only directory (a read-only tmpfs: root ignores permission bits) - clear error, exit 2;
+#   1. a read-only directory (a read-only tmpfs: root ignores permission bits) - clear error, exit 4 (file or database error, cli/exit_codes.hpp);
 #   2. a corrupt database file (a page overwritten mid-file) - refused at start, file untouched;
 #   3. a full disk (a 2 MiB tmpfs) - the failing write re-queues the job, its watcher is told
 #      (cyclopt watch exits 2 with the reason), every stored point stays, integrity_check ok.
@@ -42,9 +42,9 @@ set +e
 "$CYCLOPTD" --database "$WORK/ro/results.db" --workers 1 >"$WORK/ro.log" 2>&1
 RC=$?
 set -e
-[ "$RC" -eq 2 ] || fail "read-only directory: exit $RC, expected 2"
+[ "$RC" -eq 4 ] || fail "read-only directory: exit $RC, expected 4"
 grep -q "is not writable" "$WORK/ro.log" || fail "read-only directory: $(cat "$WORK/ro.log")"
-echo "read-only directory: exit 2, $(head -1 "$WORK/ro.log")"
+echo "read-only directory: exit 4, $(head -1 "$WORK/ro.log")"
 
 # 2. Corrupt database: many rows, then a page in the middle overwritten.
 DB=$WORK/corrupt.db
@@ -56,10 +56,10 @@ set +e
 "$CYCLOPTD" --database "$DB" --workers 1 >"$WORK/corrupt.log" 2>&1
 RC=$?
 set -e
-[ "$RC" -eq 2 ] || fail "corrupt database: exit $RC, expected 2"
+[ "$RC" -eq 4 ] || fail "corrupt database: exit $RC, expected 4"
 grep -q "is damaged (PRAGMA quick_check" "$WORK/corrupt.log" || fail "corrupt database: $(cat "$WORK/corrupt.log")"
 [ "$(md5sum <"$DB")" = "$SUM" ] || fail "corrupt database: the server wrote to it"
-echo "corrupt database: exit 2, file unchanged, $(head -c 200 "$WORK/corrupt.log")"
+echo "corrupt database: exit 4, file unchanged, $(head -c 200 "$WORK/corrupt.log")"
 
 # 3. Full disk: a 2 MiB file system; a foot sweep of 3000 points fills it.
 mkdir -p "$WORK/small"

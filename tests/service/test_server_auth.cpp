@@ -124,7 +124,7 @@ TEST_F(ServerAuth, ClientsBelieveOnlyMessagesSignedWithTheirKey) {
   ASSERT_TRUE(ack);
   EXPECT_TRUE(ack->accepted) << "believed: " << ack->problem;
   // Forged done messages for the watched job: the watch ends with the server's real one.
-  cyclopt_lcm::job_done_t fake_done{ack->job_id, "alice-w", "failed", 0, 0.0, 0.0, "forged"};
+  cyclopt_lcm::job_done_t fake_done{ack->job_id, "alice-w", "failed", 0, 0.0, 0.0, "forged", -1, -1};
   rogue.publish(channels::kDone, fake_done);
   rogue.publish(channels::kDone, fake_done, &key("bob"));
   cyclopt_lcm::job_progress_t fake_progress{ack->job_id, "alice-w", "foot_sweep", 0, 0, 0, 0, 0, 0, 99, 100, 99.0, 0,

@@ -70,6 +70,26 @@ TEST_F(WalkerJobs, OptimiseLowersTheCostOfTransport) {
   EXPECT_TRUE(values["solver"]["success"].get<bool>());
 }
 
+// Issue 17 item 2: a job whose only solve ended at max_iterations is not "done": it fails, keeps
+// the point, and says which point did not converge and why.
+TEST_F(WalkerJobs, AJobWhoseSolveDidNotConvergeFailsNamingThePoint) {
+  server::Server srv(config_, kinds_, lcm_);
+  nlohmann::json spec = walker_spec("optimise");
+  spec["solver"]["max_iterations"] = 2;
+  const auto ack = client_.submit("unconverged-1", spec.dump(), 5.0);
+  ASSERT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
+  const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "failed");
+  EXPECT_EQ(done->points_stored, 1);
+  EXPECT_EQ(done->points_expected, 1);
+  EXPECT_EQ(done->points_converged, 0);
+  EXPECT_EQ(done->error, "0 of 1 points converged; not converged: speed 1 (max_iterations)");
+  const storage::QueryPage job = storage::run_query(srv.store(), storage::query_for("job", ack->job_id));
+  EXPECT_EQ(job.rows.at(0)["state"], "failed");
+  EXPECT_EQ(job.rows.at(0)["points_converged"], 0);
+}
+
 TEST_F(WalkerJobs, ContinuationStoresEveryPointWithItsCurve) {
   nlohmann::json spec = walker_spec("continuation");
   spec.erase("speed");

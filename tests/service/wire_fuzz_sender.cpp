@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       sample(cyclopt::channels::kAck, cyclopt_lcm::job_ack_t{"netns-fuzz-ack", true, kForeignJob, false, "queued", "", ""}),
       sample(cyclopt::channels::kProgress,
              cyclopt_lcm::job_progress_t{kForeignJob, "x", "foot_sweep", 1, 2, 0.5, nan, 1.0, 0, 1, 2, 50.0, nan, "m"}),
-      sample(cyclopt::channels::kDone, cyclopt_lcm::job_done_t{kForeignJob, "x", "done", 2, 1.5, 0.001, ""}),
+      sample(cyclopt::channels::kDone, cyclopt_lcm::job_done_t{kForeignJob, "x", "done", 2, 1.5, 0.001, "", 2, 2}),
       sample(cyclopt::channels::kQueryReply,
              cyclopt_lcm::query_reply_t{"netns-fuzz-reply", 0, 1, 1, -1, R"([{"id": 1}])", "", 0, 0})};
   std::uint32_t seqno = 0;

@@ -3,13 +3,31 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <stdexcept>
 
 namespace cyclopt::plot {
 namespace {
 
-std::string with_omitted(const std::string& label, int omitted) {
-  return omitted == 0 ? label : label + " (" + std::to_string(omitted) + " unconverged omitted)";
+// "label (left out: 2 max_iterations, 1 not found)": how many points were not drawn and why.
+std::string with_omitted(const std::string& label, const std::vector<std::string>& statuses) {
+  if (statuses.empty()) return label;
+  std::map<std::string, int> count;
+  for (const std::string& s : statuses) ++count[s.empty() ? "no status" : s];
+  std::string why;
+  for (const auto& [status, n] : count) why += (why.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+  return label + " (left out: " + why + ")";
+}
+
+// Why nothing can be drawn: "no converged gait (job 3: 1 max_iterations)".
+std::string no_converged_gait(const std::vector<WalkerJobResults>& jobs) {
+  std::string why;
+  for (const WalkerJobResults& job : jobs) {
+    std::vector<std::string> statuses;
+    for (const GaitPoint& p : job.points) statuses.push_back(p.status);
+    why += (why.empty() ? "" : "; ") + with_omitted("job " + std::to_string(job.id), statuses);
+  }
+  return "no converged gait (" + why + ")";
 }
 
 // One series per job of value(point) over the mean speed of the converged points.
@@ -19,10 +37,10 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
   chart.axes = axes;
   for (const WalkerJobResults& job : jobs) {
     Series s{job.label, {}, {}, true, false, std::nullopt};
-    int omitted = 0;
+    std::vector<std::string> omitted;
     for (const GaitPoint& p : job.points) {
       if (!p.converged) {
-        ++omitted;
+        omitted.push_back(p.status);
         continue;
       }
       s.x.push_back(p.gait.value("mean_speed", p.speed));
@@ -31,7 +49,7 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
     s.label = with_omitted(s.label, omitted);
     if (!s.x.empty()) chart.series.push_back(std::move(s));
   }
-  if (chart.series.empty()) throw std::invalid_argument("'" + axes.title + "': no converged gait in the given jobs");
+  if (chart.series.empty()) throw std::invalid_argument(no_converged_gait(jobs));
   return chart;
 }
 
@@ -74,7 +92,7 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
   LineChart chart;
   chart.axes = {"Maximal joint torques (seed 001 Fig. 9.4)", "mean speed v (m/s)",
                 "max |u| over the step (N m)", true};
-  int omitted = 0;  // points, counted once per job
+  std::vector<std::string> omitted;  // statuses of the points not drawn, once per job
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const int joints = jobs[k].job.foot.model == foot::FootModel::point ? 4 : 6;
     for (int j = 0; j < joints; ++j) {
@@ -84,14 +102,14 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
         if (p.converged && p.trajectory.contains("torque")) {
           s.x.push_back(p.gait.value("mean_speed", p.speed));
           s.y.push_back(max_abs_torque(p, j));
-        } else {
-          omitted += j == 0;
+        } else if (j == 0) {
+          omitted.push_back(p.converged ? "without torques" : p.status);
         }
       if (!s.x.empty()) chart.series.push_back(std::move(s));
     }
   }
-  if (chart.series.empty()) throw std::invalid_argument("'" + chart.axes.title + "': no converged gait with torques");
-  if (omitted > 0) chart.axes.title += ", " + std::to_string(omitted) + " unconverged point(s) not drawn";
+  if (chart.series.empty()) throw std::invalid_argument(no_converged_gait(jobs));
+  chart.axes.title = with_omitted(chart.axes.title, omitted);
   start_at_zero(chart);
   return chart;
 }
@@ -105,7 +123,7 @@ LineChart step_length_chart(const std::vector<WalkerJobResults>& jobs) {
 
 LineChart floquet_chart(const std::vector<WalkerJobResults>& jobs) {
   return per_job_chart(jobs,
-                       {"Floquet multiplier of the optimal gaits (seed 001 Fig. 9.6b; stable for 0 < Lambda < 1)",
+                       {"Floquet multiplier of the optimal gaits (seed 001 Fig. 9.6b; stable for |Lambda| < 1)",
                         "mean speed v (m/s)", "Floquet multiplier Lambda (eq. 5.89) (-)", true},
                        [](const GaitPoint& p) { return p.gait.at("floquet_multiplier").get<double>(); });
 }

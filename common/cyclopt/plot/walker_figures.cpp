@@ -46,7 +46,7 @@ Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults
     return {"floquet_multiplier", "Floquet multiplier over speed (seed 001 Fig. 9.6b)", floquet_chart(jobs), {}};
   if (kind == "stroboscope") {
     const GaitPoint* p = point_near(jobs.front(), std::isfinite(speed) ? speed : middle_speed(jobs.front()));
-    if (!p) throw std::invalid_argument("plot stroboscope: job " + std::to_string(jobs.front().id) +
+    if (!p) throw std::invalid_argument("job " + std::to_string(jobs.front().id) +
                                         " has no converged gait with a stored trajectory");
     char caption[160];
     std::snprintf(caption, sizeof caption, "Two steps of the gait at %.2f m/s (seed 001 Fig. 9.2), %s", p->speed,
@@ -61,20 +61,21 @@ Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults
         return {"foot_shape", "Foot shape of job " + std::to_string(job.id) +
                                   " with its generating polygon (seed 001 Fig. 3.5a)",
                 foot_shape_scene(job.job.foot), {}};
-    throw std::invalid_argument("plot foot: the given jobs all walk on point feet");
+    throw std::invalid_argument("the given jobs all walk on point feet, which have no foot shape");
   }
   std::string known;
   for (const std::string& k : walker_figure_kinds()) known += (known.empty() ? "" : ", ") + k;
   throw std::invalid_argument("plot: unknown KIND '" + kind + "' (known: " + known + ", giant-swing, all)");
 }
 
-std::vector<Figure> walker_figures(const std::vector<WalkerJobResults>& jobs, double speed) {
+std::vector<Figure> walker_figures(const std::vector<WalkerJobResults>& jobs, double speed,
+                                   std::vector<std::string>* not_drawn) {
   std::vector<Figure> out;
   for (const std::string& kind : walker_figure_kinds()) {
     try {
       out.push_back(walker_figure(kind, jobs, speed));
-    } catch (const std::invalid_argument&) {
-      // nothing to draw for this kind (e.g. point feet have no foot figure)
+    } catch (const std::invalid_argument& e) {  // nothing to draw for this kind
+      if (not_drawn) not_drawn->push_back(kind + ": " + e.what());
     }
   }
   return out;

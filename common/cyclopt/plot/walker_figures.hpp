@@ -33,9 +33,11 @@ const std::vector<std::string>& walker_figure_kinds();
 Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults>& jobs,
                      double speed = std::numeric_limits<double>::quiet_NaN());
 
-// Every kind that can be drawn from these jobs (the others are skipped).
+// Every kind that can be drawn from these jobs; the others are skipped and, with `not_drawn`,
+// listed there as "KIND: why" (e.g. "stroboscope: job 3 has no converged gait ...").
 std::vector<Figure> walker_figures(const std::vector<WalkerJobResults>& jobs,
-                                   double speed = std::numeric_limits<double>::quiet_NaN());
+                                   double speed = std::numeric_limits<double>::quiet_NaN(),
+                                   std::vector<std::string>* not_drawn = nullptr);
 
 // Writes DIR/NAME.png and DIR/NAME.svg (creating DIR); returns both paths.
 std::vector<std::string> write_figure(const Figure& figure, const std::string& dir);

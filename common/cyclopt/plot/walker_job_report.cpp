@@ -2,6 +2,7 @@
 
 #include "cyclopt/plot/walker_figures.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace cyclopt::plot {
@@ -38,23 +39,28 @@ Report walker_job_report(const nlohmann::json& doc) {
   Report report;
   report.title = "cyclopt job " + std::to_string(r.id) + ": " + r.label;
   report.subtitle = "walker " + doc.value("task", std::string()) + ", state " + doc.value("state", std::string()) + ", " +
-                    std::to_string(doc.value("points_stored", 0)) + " points stored, " +
+                    std::to_string(doc.value("points_stored", 0)) + " points stored" +
+                    (doc.contains("points_converged") && doc["points_converged"].is_number()
+                         ? " (" + std::to_string(doc["points_converged"].get<int>()) + " required points converged), "
+                         : std::string(", ")) +
                     number(doc.value("run_seconds", nlohmann::json()), "%.1f") + " s of computation, " +
                     std::to_string(doc.value("attempts", 0)) + " attempt(s)";
   ReportSection spec;
   spec.heading = "Job specification";
   spec.code = r.spec.dump(2);
-  if (!doc.value("error", std::string()).empty()) spec.text = "error: " + doc["error"].get<std::string>();
+  if (!doc.value("error", std::string()).empty())
+    spec.text = (doc.value("state", std::string()) == "incomplete" ? "outcome: " : "error: ") + doc["error"].get<std::string>();
   ReportSection results;
   results.heading = "Solved points";
   results.text = "One row per requested speed; f_mech (eq. 5.102) and f_usq (eq. 5.101) per weight and step length, "
-                 "Floquet multiplier Lambda (eq. 5.89), stable for 0 < Lambda < 1 (eq. 5.90), max inequality of eq. 5.104 "
+                 "Floquet multiplier Lambda (eq. 5.89), stable for |Lambda| < 1 (eq. 5.90), max inequality of eq. 5.104 "
                  "(<= 0 is feasible).";
   results.tables.push_back(result_table(r));
   ReportSection figures;
   figures.heading = "Figures";
-  for (const Figure& f : walker_figures({r})) figures.figures.push_back({f.caption, svg_of(f)});
-  if (figures.figures.empty()) figures.text = "No converged gait: nothing to draw.";
+  std::vector<std::string> not_drawn;
+  for (const Figure& f : walker_figures({r}, std::nan(""), &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
+  for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
   report.sections = {spec, results, figures};
   return report;
 }

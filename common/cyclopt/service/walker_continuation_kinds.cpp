@@ -64,16 +64,20 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec) {
 }
 
 // Stores curve points as they come: curve_index = curve id + offset, numbered along the curve.
+// grid_points_required: the points on the requested grid are what the job was asked for
+// (a continuation job), rather than a by-product (a sweep's runs, whose best rows are).
 class CurveStore {
  public:
-  CurveStore(JobContext& ctx, const continuation::ParametricProblem& family, int offset)
-      : ctx_(ctx), family_(family), offset_(offset) {}
+  CurveStore(JobContext& ctx, const continuation::ParametricProblem& family, int offset, bool grid_points_required)
+      : ctx_(ctx), family_(family), offset_(offset), grid_points_required_(grid_points_required) {}
 
   bool operator()(const CurvePoint& c) {
     const int curve = c.curve_id + offset_;
     if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(c.curve_id), family_.parameter_name);
     const int index = counts_[curve]++;
-    ctx_.store_point(point(c, {curve, index}));
+    storage::SolutionPoint p = point(c, {curve, index});
+    p.required = grid_points_required_ && c.on_grid;
+    ctx_.store_point(p);
     return ctx_.stop_reason() == StopReason::none;
   }
 
@@ -101,6 +105,7 @@ class CurveStore {
   JobContext& ctx_;
   const continuation::ParametricProblem& family_;
   const int offset_;
+  const bool grid_points_required_;
   std::map<int, int> counts_;
 };
 
@@ -125,7 +130,7 @@ void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
     if (!sg.real) throw std::runtime_error("no starting gait at " + std::to_string(first.speed) + " m/s: " + sg.message);
     x0 = walker::GaitProblem(model, first).initial_point(sg.x);
   }
-  CurveStore store(ctx, family, 0);
+  CurveStore store(ctx, family, 0, true);
   const continuation::ContinuationResult r =
       continuation::continue_solution(family, x0, job.values, job.options, {}, [&](const CurvePoint& c) { return store(c); });
   if (ctx.stop_reason() != StopReason::none) return;
@@ -147,7 +152,7 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
   so.journal = sweep_journal(ctx);  // a resumed sweep reuses what an earlier attempt finished
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
-  CurveStore store(ctx, family, 1);
+  CurveStore store(ctx, family, 1, false);
   const studies::SpeedSweepResult r =
       studies::speed_sweep(model, job.walker.problem, so, [&](const CurvePoint& c) { return store(c); });
   if (ctx.stop_reason() != StopReason::none) return;
@@ -156,7 +161,7 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
     const studies::BestPoint& b = r.best[i];
     storage::SolutionPoint p;
     if (b.found) {
-      p = store.point(b.point, {0, static_cast<int>(i)});
+      p = store.point(b.point, {0, static_cast<int>(i)});  // required, as every best row
       p.values["found_by"] = studies::describe(b);  // which sweep step found the point
     } else {
       p.key = {0, static_cast<int>(i)};

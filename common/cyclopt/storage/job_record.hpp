@@ -23,6 +23,7 @@ struct JobRecord {
   std::optional<double> finished_at;
   std::optional<int> points_total;
   int points_stored = 0;              // rows in solutions
+  std::optional<int> points_converged;  // required points that converged, set when the job ends
   double run_seconds = 0.0;
   double publish_seconds = 0.0;
   std::string error;

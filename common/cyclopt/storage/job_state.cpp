@@ -5,7 +5,7 @@
 namespace cyclopt::storage {
 
 namespace {
-constexpr std::array<std::string_view, 5> kNames = {"queued", "running", "done", "failed", "cancelled"};
+constexpr std::array<std::string_view, 6> kNames = {"queued", "running", "done", "failed", "cancelled", "incomplete"};
 }
 
 std::string_view to_string(JobState s) { return kNames[static_cast<std::size_t>(s)]; }

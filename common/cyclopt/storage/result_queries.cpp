@@ -146,6 +146,7 @@ nlohmann::json to_json(const JobRecord& job, bool with_spec) {
                       {"finished_at", opt(job.finished_at)},
                       {"points_total", job.points_total ? nlohmann::json(*job.points_total) : nlohmann::json(nullptr)},
                       {"points_stored", job.points_stored},
+                      {"points_converged", job.points_converged ? nlohmann::json(*job.points_converged) : nlohmann::json(nullptr)},
                       {"run_seconds", job.run_seconds},
                       {"publish_seconds", job.publish_seconds},
                       {"error", utf8(job.error)}};

@@ -19,7 +19,8 @@ namespace {
 constexpr const char* kJobColumns =
     "j.id, j.request_id, j.scene, j.task, j.spec_json, j.state, j.cancel_requested, j.attempts, j.submitted_at, "
     "j.started_at, j.finished_at, j.points_total, "
-    "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error";
+    "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error, "
+    "j.points_converged";
 
 std::optional<double> optional_real(const Statement& s, int col) {
   return s.is_null(col) ? std::nullopt : std::optional<double>(s.real(col));
@@ -43,6 +44,7 @@ JobRecord read_job(const Statement& s) {
   r.run_seconds = s.real(13);
   r.publish_seconds = s.real(14);
   r.error = s.text(15);
+  if (!s.is_null(16)) r.points_converged = static_cast<int>(s.int64(16));
   return r;
 }
 
@@ -95,6 +97,37 @@ void add_missing_columns(Connection& db) {
   }
   if (!columns.count("sender")) db.exec("ALTER TABLE jobs ADD COLUMN sender TEXT NOT NULL DEFAULT ''");
   if (!columns.count("estimated_seconds")) db.exec("ALTER TABLE jobs ADD COLUMN estimated_seconds REAL");
+  if (!columns.count("points_converged")) db.exec("ALTER TABLE jobs ADD COLUMN points_converged INTEGER");
+  std::set<std::string> solution_columns;
+  {
+    Statement q(db, "PRAGMA table_info(solutions)");
+    while (q.step()) solution_columns.insert(q.text(1));
+  }
+  if (!solution_columns.count("required"))
+    db.exec("ALTER TABLE solutions ADD COLUMN required INTEGER NOT NULL DEFAULT 1");
+}
+
+// Files made before the state 'incomplete' existed have a CHECK on jobs.state without it, which
+// SQLite cannot alter: the table is rebuilt with the current list (the documented procedure:
+// copy, drop, rename, with foreign keys off so the other tables' references stay).
+void allow_every_job_state(Connection& db) {
+  std::string sql;
+  {
+    Statement q(db, "SELECT sql FROM sqlite_master WHERE type = 'table' AND name = 'jobs'");
+    if (q.step()) sql = q.text(0);
+  }
+  const std::size_t check = sql.find("'cancelled')");
+  if (check == std::string::npos) return;  // the current list (or no CHECK at all)
+  sql.replace(check, std::string("'cancelled')").size(), "'cancelled', 'incomplete')");
+  db.exec("PRAGMA foreign_keys = OFF");
+  {
+    Transaction tx(db);
+    db.exec("CREATE TABLE jobs_migrating " + sql.substr(sql.find('(')));
+    db.exec("INSERT INTO jobs_migrating SELECT * FROM jobs");
+    db.exec("DROP TABLE jobs");
+    db.exec("ALTER TABLE jobs_migrating RENAME TO jobs");
+    tx.commit();
+  }
 }
 
 }  // namespace
@@ -108,9 +141,11 @@ ResultStore::ResultStore(const std::string& path, OpenMode mode)
   check_integrity(db_, path);
   db_.exec("PRAGMA journal_mode = WAL");
   db_.exec("PRAGMA synchronous = NORMAL");
-  db_.exec("PRAGMA foreign_keys = ON");
   db_.exec(results_schema_sql());
   add_missing_columns(db_);
+  allow_every_job_state(db_);
+  db_.exec(results_schema_sql());  // the indexes of a rebuilt jobs table
+  db_.exec("PRAGMA foreign_keys = ON");
 }
 
 SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quota) {
@@ -218,18 +253,23 @@ void ResultStore::add_run_seconds(std::int64_t job_id, double seconds) {
 }
 
 void ResultStore::finish(std::int64_t job_id, JobState final_state, const std::string& error, double run_seconds,
-                         double publish_seconds) {
+                         double publish_seconds, std::optional<int> points_converged) {
   std::lock_guard lock(mutex_);
   Transaction tx(db_);
   Statement upd(db_,
                 "UPDATE jobs SET state = ?, finished_at = ?, error = ?, run_seconds = run_seconds + ?, "
-                "publish_seconds = publish_seconds + ? WHERE id = ?");
+                "publish_seconds = publish_seconds + ?, points_converged = ? WHERE id = ?");
   upd.bind(1, to_string(final_state)).bind(2, unix_now());
   if (error.empty())
     upd.bind(3, std::nullopt);
   else
     upd.bind(3, error);
-  upd.bind(4, run_seconds).bind(5, publish_seconds).bind(6, job_id).run();
+  upd.bind(4, run_seconds).bind(5, publish_seconds);
+  if (points_converged)
+    upd.bind(6, std::int64_t{*points_converged});
+  else
+    upd.bind(6, std::nullopt);
+  upd.bind(7, job_id).run();
   tx.commit();  // the state first (see return_to_queue)
   add_event_if_room_locked(job_id, std::string(to_string(final_state)), error);
 }
@@ -281,7 +321,7 @@ bool ResultStore::store_point(std::int64_t job_id, const SolutionPoint& p) {
   Transaction tx(db_);
   Statement ins(db_,
                 "INSERT INTO solutions (job_id, curve_index, point_index, parameter, objective, constraint_violation, "
-                "iterations, status, values_json, solved_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?) "
+                "iterations, status, values_json, solved_at, required) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) "
                 "ON CONFLICT (job_id, curve_index, point_index) DO NOTHING");
   ins.bind(1, job_id)
       .bind(2, std::int64_t{p.key.curve_index})
@@ -293,6 +333,7 @@ bool ResultStore::store_point(std::int64_t job_id, const SolutionPoint& p) {
       .bind(8, p.status)
       .bind(9, p.values.dump())
       .bind(10, unix_now())
+      .bind(11, std::int64_t{p.required})
       .run();
   if (db_.changes() == 0) return false;
   if (p.trajectory) {
@@ -310,6 +351,20 @@ std::set<PointKey> ResultStore::stored_points(std::int64_t job_id) {
   q.bind(1, job_id);
   while (q.step()) keys.insert({static_cast<int>(q.int64(0)), static_cast<int>(q.int64(1))});
   return keys;
+}
+
+std::vector<RequiredPoint> ResultStore::required_points(std::int64_t job_id) {
+  std::lock_guard lock(mutex_);
+  std::vector<RequiredPoint> points;
+  Statement q(db_,
+              "SELECT s.curve_index, s.point_index, s.parameter, s.status, coalesce(c.parameter_name, '') "
+              "FROM solutions s LEFT JOIN curves c ON c.job_id = s.job_id AND c.curve_index = s.curve_index "
+              "WHERE s.job_id = ? AND s.required = 1 ORDER BY s.curve_index, s.point_index");
+  q.bind(1, job_id);
+  while (q.step())
+    points.push_back({{static_cast<int>(q.int64(0)), static_cast<int>(q.int64(1))},
+                      q.is_null(2) ? std::numeric_limits<double>::quiet_NaN() : q.real(2), q.text(3), q.text(4)});
+  return points;
 }
 
 void ResultStore::store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value) {

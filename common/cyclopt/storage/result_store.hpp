@@ -19,6 +19,14 @@ namespace cyclopt::storage {
 
 enum class OpenMode { read_write, read_only };
 
+// What the outcome of a job is judged by (job_outcome.hpp): a stored required point's status.
+struct RequiredPoint {
+  PointKey key;
+  double parameter;
+  std::string status;
+  std::string parameter_name;  // of its curve ("" if the curve was not declared)
+};
+
 // What a submission adds to the queue. sender identifies the submitter for the queue quota (the
 // authenticated key, or "" for unauthenticated clients, who then share one quota).
 struct Submission {
@@ -69,8 +77,9 @@ class ResultStore {
   // add_run_seconds() already recorded). Both commit the state change before its event, and the
   // event only if the file has room for it, so a job's state can still be recorded on a full disk.
   void return_to_queue(std::int64_t job_id, double run_seconds, double publish_seconds, const std::string& why);
+  // points_converged: the job's required points that converged (job_outcome.hpp), if judged.
   void finish(std::int64_t job_id, JobState final_state, const std::string& error, double run_seconds,
-              double publish_seconds);
+              double publish_seconds, std::optional<int> points_converged = std::nullopt);
   // Checkpoints a running attempt's time, so it counts after a kill -9 too.
   void add_run_seconds(std::int64_t job_id, double seconds);
   CancelOutcome cancel(std::int64_t job_id);
@@ -80,6 +89,8 @@ class ResultStore {
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
   std::set<PointKey> stored_points(std::int64_t job_id);
+  // The stored points with required = 1 (solution_point.hpp), by curve and point index.
+  std::vector<RequiredPoint> required_points(std::int64_t job_id);
   void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces
   std::map<std::string, std::string> checkpoints(std::int64_t job_id);
   void add_event(std::int64_t job_id, const std::string& kind, const std::string& message);

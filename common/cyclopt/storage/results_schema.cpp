@@ -13,7 +13,7 @@ CREATE TABLE IF NOT EXISTS jobs (
   task TEXT NOT NULL,
   spec_json TEXT NOT NULL,
   state TEXT NOT NULL DEFAULT 'queued'
-    CHECK (state IN ('queued', 'running', 'done', 'failed', 'cancelled')),
+    CHECK (state IN ('queued', 'running', 'done', 'failed', 'cancelled', 'incomplete')),
   cancel_requested INTEGER NOT NULL DEFAULT 0,
   attempts INTEGER NOT NULL DEFAULT 0,
   submitted_at REAL NOT NULL,
@@ -22,7 +22,8 @@ CREATE TABLE IF NOT EXISTS jobs (
   points_total INTEGER,
   run_seconds REAL NOT NULL DEFAULT 0,
   publish_seconds REAL NOT NULL DEFAULT 0,
-  error TEXT
+  error TEXT,
+  points_converged INTEGER
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs (state, id);
 CREATE TABLE IF NOT EXISTS events (
@@ -52,6 +53,7 @@ CREATE TABLE IF NOT EXISTS solutions (
   iterations INTEGER,
   status TEXT NOT NULL,
   values_json TEXT NOT NULL,
+  required INTEGER NOT NULL DEFAULT 1,
   solved_at REAL NOT NULL,
   UNIQUE (job_id, curve_index, point_index)
 );

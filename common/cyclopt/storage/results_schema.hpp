@@ -7,7 +7,9 @@
 //     request_id    TEXT UNIQUE NOT NULL  client-generated; resubmitting it never adds a job
 //     scene, task   TEXT                  copied from the spec ("walker", "foot_sweep", ...)
 //     spec_json     TEXT NOT NULL         the spec as submitted (validated)
-//     state         TEXT                  queued | running | done | failed | cancelled
+//     state         TEXT                  queued | running | done | incomplete | failed | cancelled
+//                                         (job_state.hpp; files made before 'incomplete' existed
+//                                         are migrated when a server opens them)
 //     cancel_requested INTEGER 0/1        set by cancel while running; honoured after a restart
 //     attempts      INTEGER               how often a worker started it (>1 after a resume)
 //     submitted_at, started_at, finished_at  REAL, Unix seconds (UTC)
@@ -16,7 +18,8 @@
 //                                         spent publishing progress, summed over attempts
 //                                         (run_seconds is checkpointed every 5 s and with every
 //                                         point, so a kill -9 loses at most that much)
-//     error         TEXT                  why a job failed (NULL otherwise)
+//     error         TEXT                  why a job failed, or which points an incomplete job lacks
+//     points_converged INTEGER            required points that converged (NULL until the job ends)
 //     sender        TEXT                  who submitted it, for the queue quota ("" anonymous)
 //     estimated_seconds REAL              the cost estimate at submission (service/job_cost.hpp)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
@@ -26,7 +29,8 @@
 //   solutions     one row per solved point, UNIQUE(job_id, curve_index, point_index) so a resumed
 //                 job can never store a point twice:
 //                 (id, job_id, curve_index, point_index, parameter, objective,
-//                  constraint_violation, iterations, status, values_json, solved_at)
+//                  constraint_violation, iterations, status, values_json, solved_at, required)
+//                 required 0/1: whether the point counts for the job's outcome (solution_point.hpp)
 //   trajectories  (id, solution_id UNIQUE -> solutions.id, format, data BLOB): the time series or
 //                 profile belonging to a solution ("json" = UTF-8 JSON document in the blob)
 //   checkpoints   (job_id, key, value), PRIMARY KEY(job_id, key): intermediate results of a job
