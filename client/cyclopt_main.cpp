@@ -5,6 +5,7 @@
 #include "cyclopt/cli/version.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/giant_swing/model.hpp"
+#include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
@@ -37,8 +38,12 @@ results database file directly (read-only) when given --db FILE.
   submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI [--point-delay-ms N]
          [--name TEXT] [--request-id ID] [--watch]
   submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
+  submit --task foot_comparison --speeds LO:STEP:HI [--feet PRESET,PRESET,...]
+         [--reference PRESET] [--starts N] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
-                     spec, --speeds a walker job of TASK (default sweep). Resent every
+                     spec, --speeds a walker job of TASK (default sweep); foot_comparison
+                     sweeps --feet (default: the 16 of seed 001 section 9.2) and --reference
+                     (default point) with --starts starts per seed speed. Resent every
                      0.5 s until the server answers (same request id, so never queued
                      twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
@@ -56,7 +61,9 @@ results database file directly (read-only) when given --db FILE.
                      (from the server, --db FILE, or files `export` wrote; several jobs give
                      one curve each). KIND: cost-of-transport (Fig. 9.19a), torques (9.4),
                      step-length (9.6a), floquet (9.6b), stroboscope (9.2; gait nearest
-                     --speed, first job), foot (3.5a), all; or giant-swing --result FILE
+                     --speed, first job), foot (3.5a), all; foot-comparison (a
+                     foot_comparison job: f_mech of every foot with the best envelope,
+                     Fig. 9.19a, and the foot outlines, Fig. 9.8); or giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
   report JOB [--out FILE.html]
                      one self-contained HTML page: spec, solved points, all figures
@@ -78,11 +85,11 @@ struct Options {
   std::string command;
   std::vector<std::string> positional;
   std::string lcm_url, key_file, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
-      what = "solutions", result;
+      what = "solutions", result, feet, reference;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
   double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan("");
-  int point_delay_ms = -1;
+  int point_delay_ms = -1, starts = -1;
   bool watch = false;
   cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
 };
@@ -112,7 +119,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 // Every option parse_args() knows, for "did you mean" on a misspelled one.
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
-    "--values", "--speeds", "--task", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--values", "--speeds", "--task", "--feet", "--reference", "--starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
     "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
@@ -141,6 +148,9 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--values") o.values = next();
     else if (a == "--speeds") o.speeds = next();
     else if (a == "--task") o.task = next();
+    else if (a == "--feet") o.feet = next();
+    else if (a == "--reference") o.reference = next();
+    else if (a == "--starts") o.starts = static_cast<int>(number(next()));
     else if (a == "--name") o.name = next();
     else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
     else if (a == "--request-id") o.request_id = next();
@@ -176,7 +186,32 @@ std::int64_t job_argument(const Options& o) {
   return job_id("JOB", o.positional[0]);
 }
 
-// The spec text of `submit`: the file's, or a foot_sweep built from flags.
+// A foot given on the command line: a JSON file's spec or a preset name.
+nlohmann::json foot_argument(const std::string& flag, const std::string& foot) {
+  std::ifstream file(foot);
+  if (!file) return foot;
+  nlohmann::json j = nlohmann::json::parse(read_file(foot), nullptr, false);
+  if (j.is_discarded()) throw LocalRejection(flag + " " + foot + ": not valid JSON");
+  return j;
+}
+
+// foot_comparison from flags: --feet (comma-separated), --reference, --starts.
+std::string foot_comparison_spec_text(const Options& o) {
+  if (o.speeds.empty()) throw UsageError("submit --task foot_comparison needs --speeds LO:STEP:HI");
+  if (!o.foot.empty()) throw UsageError("submit --task foot_comparison takes --feet and --reference, not --foot");
+  nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", o.speeds}};
+  if (!o.feet.empty()) {
+    spec["feet"] = nlohmann::json::array();
+    std::stringstream ss(o.feet);
+    for (std::string foot; std::getline(ss, foot, ',');) spec["feet"].push_back(foot_argument("--feet", foot));
+  }
+  if (!o.reference.empty()) spec["reference"] = foot_argument("--reference", o.reference);
+  if (o.starts > 0) spec["multistart"] = {{"starts", o.starts}};
+  if (!o.name.empty()) spec["name"] = o.name;
+  return spec.dump();
+}
+
+// The spec text of `submit`: the file's, or a foot_sweep / walker job / foot_comparison from flags.
 std::string spec_text(const Options& o) {
   if (!o.spec_file.empty()) {
     const std::string text = read_file(o.spec_file);
@@ -186,18 +221,19 @@ std::string spec_text(const Options& o) {
       throw LocalRejection(o.spec_file + " is not valid JSON (" + e.what() + "); nothing was sent");
     }
   }
+  if (o.task == "foot_comparison") return foot_comparison_spec_text(o);
+  if (!o.feet.empty() || !o.reference.empty()) throw UsageError("--feet and --reference need --task foot_comparison");
   const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
   if (o.foot.empty() || (!foot_sweep && o.speeds.empty()))
     throw UsageError("submit needs --spec FILE, or --foot with --sweep and --values, or --foot with --speeds");
   nlohmann::json spec = {{"scene", "walker"}, {"task", foot_sweep ? "foot_sweep" : o.task}};
-  std::ifstream foot_file(o.foot);
-  spec["foot"] = foot_file ? nlohmann::json::parse(read_file(o.foot), nullptr, false) : nlohmann::json(o.foot);
-  if (spec["foot"].is_discarded()) throw LocalRejection("--foot " + o.foot + ": not valid JSON");
+  spec["foot"] = foot_argument("--foot", o.foot);
   if (foot_sweep)
     spec["sweep"] = {{"parameter", o.sweep}, {"values", o.values}};
   else
     spec["speeds"] = o.speeds;
   if (o.point_delay_ms >= 0) spec["point_delay_ms"] = o.point_delay_ms;
+  if (o.starts > 0) spec["multistart"] = {{"starts", o.starts}};
   if (!o.name.empty()) spec["name"] = o.name;
   return spec.dump();
 }
@@ -389,6 +425,10 @@ int plot(Session& s, const Options& o) {
                                                                         nlohmann::json::parse(read_file(o.result)));
     const cyclopt::plot::RenderOptions size = cyclopt::plot::fitted_options(scene, 800);
     figures.push_back({"giant_swing_stroboscope", "Giant swing stroboscope (seed 000 Fig. 5.5)", std::move(scene), size});
+  } else if (kind == "foot-comparison") {
+    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-comparison needs one --job JOB or --from FILE.json");
+    figures = cyclopt::plot::foot_comparison_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
+                                                                    : job_document(s, o.jobs.front()));
   } else {
     if (o.jobs.empty() && o.from.empty()) throw UsageError("plot " + kind + " needs --job JOB or --from FILE.json");
     std::vector<cyclopt::plot::WalkerJobResults> jobs;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 
 namespace cyclopt {
 namespace {
@@ -19,6 +20,17 @@ nlohmann::json walker_spec(const std::string& task) {
 }
 
 using WalkerJobs = testing::MemqServerTest;
+
+// "field: message" of the rejection of a spec by the built-in kinds, or "accepted".
+std::string rejection(const nlohmann::json& spec) {
+  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  try {
+    service::validate_job_spec(spec, kinds);
+  } catch (const service::SpecError& e) {
+    return e.field() + ": " + e.what();
+  }
+  return "accepted";
+}
 
 TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
   const auto rows = run_job("eval-1", walker_spec("evaluate"), 1);
@@ -132,16 +144,71 @@ TEST_F(WalkerJobs, SweepSelectsTheBestPointPerSpeed) {
   EXPECT_EQ(best, 3);
 }
 
-TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  auto rejection = [&](nlohmann::json spec) -> std::string {
-    try {
-      service::validate_job_spec(spec, kinds);
-    } catch (const service::SpecError& e) {
-      return e.field() + ": " + e.what();
+// foot_comparison (foot_comparison_kind.hpp): point feet against one rolling foot at two speeds.
+// Curve 0 holds the better foot per speed, curves 1-2 each foot's best points, curve 3 the summary,
+// whose mean f_mech and saving must follow from the stored per-speed gaits.
+TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
+  const nlohmann::json spec = {{"scene", "walker"},
+                               {"task", "foot_comparison"},
+                               {"speeds", "1.0:0.1:1.1"},
+                               {"points", 50},
+                               {"feet", {"P1-shoes-left-HM-SG"}},
+                               {"multistart", {{"starts", 2}, {"seed", 3}, {"scale", 0.02}}},
+                               {"continuation", {{"seed_speeds", 1.0}}}};
+  const auto rows = run_job("comparison-1", spec, 2 * 2 + 2 + 2);
+  std::map<int, std::vector<nlohmann::json>> by_curve;
+  for (const auto& r : rows) by_curve[r["curve"].get<int>()].push_back(r);
+  ASSERT_EQ(by_curve[1].size(), 2u);
+  ASSERT_EQ(by_curve[2].size(), 2u);
+  ASSERT_EQ(by_curve[3].size(), 2u);
+  double sum[2] = {0, 0};
+  for (int k = 0; k < 2; ++k)
+    for (const auto& r : by_curve[1 + k]) {
+      const nlohmann::json& v = r["values"];
+      ASSERT_TRUE(v.contains("f_mech")) << r.dump().substr(0, 400);
+      // The stored f_mech is the gait's own (values.gait), at the requested speed.
+      EXPECT_DOUBLE_EQ(v["f_mech"].get<double>(), v["gait"]["f_mech"].get<double>());
+      EXPECT_NEAR(v["gait"]["mean_speed"].get<double>(), r["parameter"].get<double>(), 1e-8);
+      sum[k] += v["f_mech"].get<double>();
     }
-    return "accepted";
-  };
+  for (const auto& r : by_curve[0]) {
+    EXPECT_EQ(r["values"]["foot"], "P1-shoes-left-HM-SG");  // the only compared foot
+    EXPECT_NEAR(r["values"]["saving"].get<double>(),
+                1.0 - r["values"]["f_mech"].get<double>() / r["values"]["reference_f_mech"].get<double>(), 1e-12);
+  }
+  const nlohmann::json& point = by_curve[3][0]["values"];
+  const nlohmann::json& rolling = by_curve[3][1]["values"];
+  EXPECT_EQ(point["foot"], "point");
+  EXPECT_TRUE(point["reference"].get<bool>());
+  EXPECT_TRUE(rolling["best_fitted"].get<bool>());
+  EXPECT_EQ(rolling["common_speeds"].get<int>(), 2);
+  EXPECT_NEAR(rolling["mean_f_mech"].get<double>(), sum[1] / 2, 1e-12);
+  EXPECT_NEAR(rolling["saving"].get<double>(), 1.0 - sum[1] / sum[0], 1e-12);
+  std::printf("foot_comparison: point %.5f, P1 shoes HM %.5f, saving %.1f %%\n", sum[0] / 2, sum[1] / 2,
+              100 * rolling["saving"].get<double>());
+}
+
+TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {
+  const nlohmann::json good = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
+  EXPECT_EQ(rejection(good), "accepted");  // the 16 feet of section 9.2 against point feet
+  nlohmann::json s = good;
+  s["feet"] = {"P1-shoes-left-HM-SG", "P9-barefoot-left-XX"};
+  EXPECT_EQ(rejection(s).rfind("feet[1]", 0), 0u) << rejection(s);
+  s = good;
+  s["feet"] = {"P2-shoes-left-HMT", "P2-shoes-left-HMT"};
+  EXPECT_NE(rejection(s).find("compared twice"), std::string::npos) << rejection(s);
+  s = good;
+  s["foot"] = "point";
+  EXPECT_EQ(rejection(s).rfind("foot", 0), 0u) << rejection(s);
+  s = good;
+  s["reference"] = "nowhere";
+  EXPECT_EQ(rejection(s).rfind("reference", 0), 0u) << rejection(s);
+  s = good;
+  s["feet"] = nlohmann::json::array();
+  EXPECT_EQ(rejection(s).rfind("feet", 0), 0u) << rejection(s);
+}
+
+TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {
   nlohmann::json s = walker_spec("optimise");
   s["speed"] = 7.0;
   EXPECT_NE(rejection(s).find("speed"), std::string::npos) << rejection(s);

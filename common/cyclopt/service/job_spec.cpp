@@ -104,8 +104,8 @@ const std::vector<std::string>& known_scenes() {
   return v;
 }
 const std::vector<std::string>& known_tasks() {
-  static const std::vector<std::string> v = {"evaluate", "optimise", "multistart", "continuation", "sweep", "foot_sweep",
-                                            "giant_swing"};
+  static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart", "continuation",
+                                            "sweep",      "foot_sweep",      "foot_comparison", "giant_swing"};
   return v;
 }
 const std::vector<std::string>& known_objectives() {

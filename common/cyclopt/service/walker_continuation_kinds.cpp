@@ -81,25 +81,7 @@ class CurveStore {
     return ctx_.stop_reason() == StopReason::none;
   }
 
-  storage::SolutionPoint point(const CurvePoint& c, storage::PointKey key) const {
-    const std::unique_ptr<nlp::Problem> problem = family_.at(c.parameter);
-    walker::GaitOptimum opt;
-    opt.summary = c.corrector;
-    opt.z = c.x;
-    opt.gait = dynamic_cast<const walker::GaitProblem&>(*problem).gait_at(c.x);
-    opt.start = c.predictor_attempts > 0 ? "QP predictor" : "previous point";
-    storage::SolutionPoint p = point_of(opt, key, c.parameter);
-    p.values["curve_id"] = c.curve_id;
-    p.values["on_grid"] = c.on_grid;
-    p.values["converged"] = c.converged;
-    p.values["predictor_attempts"] = c.predictor_attempts;
-    p.values["predictor_steps"] = c.predictor_steps;
-    if (std::isfinite(c.kappa)) p.values["kappa"] = c.kappa;
-    p.values["trust_region"] = c.trust_region;
-    p.values["point_seconds"] = c.seconds;
-    p.values["x"] = std::vector<double>(c.x.data(), c.x.data() + c.x.size());
-    return p;
-  }
+  storage::SolutionPoint point(const CurvePoint& c, storage::PointKey key) const { return point_of(family_, c, key); }
 
  private:
   JobContext& ctx_;

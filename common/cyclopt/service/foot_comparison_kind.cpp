@@ -1,0 +1,224 @@
+#include "cyclopt/service/foot_comparison_kind.hpp"
+
+#include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/service/solver_progress.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/service/walker_points.hpp"
+#include "cyclopt/studies/foot_comparison.hpp"
+#include "cyclopt/studies/walker_family.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace cyclopt::service {
+namespace {
+
+struct ComparisonJob {
+  WalkerJob walker;                       // the common fields; walker.foot is the reference
+  std::vector<std::string> names;         // reference first, then the compared feet
+  std::vector<foot::FootSpec> feet;       // same order
+  std::vector<double> seed_speeds{0.3, 1.3, 2.3};  // "continuation.seed_speeds"
+  double min_trust_region = continuation::ContinuationOptions{}.min_trust_region;
+};
+
+std::string foot_name(const nlohmann::json& v, const foot::FootSpec& spec, const std::string& path) {
+  if (v.is_string()) return v.get<std::string>();
+  return spec.name.empty() ? path : spec.name;
+}
+
+ComparisonJob parse_comparison_job(const nlohmann::json& spec) {
+  for (const char* key : {"foot", "start", "free_parameters"})
+    if (spec.contains(key))
+      throw SpecError(key, std::string("is not a field of foot_comparison (") +
+                               (std::string(key) == "foot" ? "give the feet as \"feet\" and \"reference\""
+                                                           : "feet of different models share no gait or foot parameters") +
+                               ")");
+  nlohmann::json common = spec;
+  common.erase("feet");
+  common.erase("reference");
+  common["foot"] = spec.contains("reference") ? spec["reference"] : nlohmann::json("point");
+  ComparisonJob j;
+  try {
+    j.walker = parse_walker_job(common, true);
+  } catch (const SpecError& e) {
+    if (e.field().rfind("foot", 0) != 0) throw;
+    throw SpecError("reference" + e.field().substr(4), e.what());
+  }
+  if (j.walker.speeds.size() < 2) throw SpecError("speeds", "needs at least two values");
+  j.names.push_back(foot_name(common["foot"], j.walker.foot, "reference"));
+  j.feet.push_back(j.walker.foot);
+  if (spec.contains("feet")) {
+    const nlohmann::json& f = spec["feet"];
+    if (!f.is_array() || f.empty() || f.size() > 64)
+      throw SpecError("feet", "must be an array of 1-64 foot preset names or foot specs");
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const std::string path = "feet[" + std::to_string(i) + "]";
+      j.feet.push_back(foot_value(f[i], path));
+      j.names.push_back(foot_name(f[i], j.feet.back(), path));
+    }
+  } else {  // seed 001 section 9.2
+    for (const foot::FittedFoot* f : foot::select_fitted_feet({.section_9_2_only = true})) {
+      j.names.push_back(f->name());
+      j.feet.push_back(f->spec);
+    }
+  }
+  if (spec.contains("continuation")) {
+    const nlohmann::json& c = object_value(spec["continuation"], "continuation");
+    reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region"});
+    if (c.contains("seed_speeds"))
+      j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
+    j.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(j.min_trust_region);
+  }
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < j.names.size(); ++i)
+    if (!seen.insert(j.names[i]).second)
+      throw SpecError(i == 0 ? "reference" : "feet[" + std::to_string(i - 1) + "]",
+                      "foot '" + j.names[i] + "' is compared twice");
+  return j;
+}
+
+storage::SolutionPoint not_found(storage::PointKey key, const studies::BestPoint& b) {
+  storage::SolutionPoint p;
+  p.key = key;
+  p.parameter = b.speed;
+  p.status = "not found";
+  p.values["reason"] = b.reason;
+  return p;
+}
+
+void run_comparison(const nlohmann::json& spec, JobContext& ctx) {
+  const ComparisonJob job = parse_comparison_job(spec);
+  const int feet = static_cast<int>(job.feet.size());
+  const int speeds = static_cast<int>(job.walker.speeds.size());
+  std::vector<studies::ComparedFoot> compared;
+  for (int k = 0; k < feet; ++k) {
+    WalkerJob w = job.walker;
+    w.foot = job.feet[static_cast<std::size_t>(k)];
+    compared.push_back({job.names[static_cast<std::size_t>(k)], w.model()});
+  }
+  studies::FootComparisonOptions o;
+  o.reference = 0;
+  o.sweep.speeds = job.walker.speeds;
+  o.sweep.starts = job.walker.starts;
+  o.sweep.seed = job.walker.seed;
+  o.sweep.scale = job.walker.scale;
+  o.sweep.seed_speeds = job.seed_speeds;
+  o.sweep.continuation.min_trust_region = job.min_trust_region;
+  o.sweep.continuation.corrector = job.walker.solver;
+  o.sweep.continuation.corrector.should_stop = stop_predicate(ctx);
+  ctx.announce(feet * speeds + speeds + feet);
+  ctx.add_curve(0, "best foot per speed", "speed");
+  for (int k = 0; k < feet; ++k)
+    ctx.add_curve(1 + k, "foot " + job.names[static_cast<std::size_t>(k)] + (k == 0 ? " (reference)" : ""), "speed");
+  ctx.add_curve(feet + 1, "mean f_mech per foot", "curve");
+  std::vector<std::vector<storage::SolutionPoint>> stored(static_cast<std::size_t>(feet));
+  std::atomic<std::size_t> running = 0;  // the foot being swept (read by multistart workers too)
+  const auto on_foot = [&](std::size_t k, const studies::FootSweepSummary& s, const studies::SpeedSweepResult&) {
+    const studies::ParametricProblem family = studies::walker_family(compared[k].model, job.walker.problem, "speed");
+    for (int i = 0; i < speeds; ++i) {
+      const studies::BestPoint& b = s.best[static_cast<std::size_t>(i)];
+      const storage::PointKey key{1 + static_cast<int>(k), i};
+      storage::SolutionPoint p = b.found ? point_of(family, b.point, key) : not_found(key, b);
+      p.values["foot"] = s.name;
+      if (b.found) p.values["found_by"] = studies::describe(b);
+      if (std::isfinite(s.f_mech[static_cast<std::size_t>(i)])) p.values["f_mech"] = s.f_mech[static_cast<std::size_t>(i)];
+      p.values["sweep_seconds"] = s.seconds;
+      ctx.store_point(p);
+      stored[k].push_back(std::move(p));
+    }
+    running = std::min(k + 1, compared.size() - 1);
+    return ctx.stop_reason() == StopReason::none;
+  };
+  // Progress names the foot being swept; the corrector reports on the job's thread (multistart
+  // workers only honour stop requests).
+  std::vector<IterationCallback> progress;
+  for (int k = 0; k < feet; ++k)
+    progress.push_back(solver_progress(ctx, {.curve_id = 1 + k, .points_done = k * speeds, .points_total = feet * speeds,
+                                             .message = "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) +
+                                                        " " + job.names[static_cast<std::size_t>(k)]}));
+  o.sweep.continuation.corrector.on_iteration = [&](const nlp::IterationReport& it) { return progress[running](it); };
+  const auto on_point = [&](std::size_t k, const continuation::CurvePoint&) {
+    running = k;
+    return ctx.stop_reason() == StopReason::none;
+  };
+  const studies::FootComparisonResult r =
+      studies::compare_feet(compared, job.walker.problem, o, on_point, on_foot);
+  if (ctx.stop_reason() != StopReason::none) return;
+  for (int i = 0; i < speeds; ++i) {
+    const int best = r.best_foot[static_cast<std::size_t>(i)];
+    const double ref = r.feet[0].f_mech[static_cast<std::size_t>(i)];
+    storage::SolutionPoint p;
+    if (best < 0) {
+      p.key = {0, i};
+      p.parameter = job.walker.speeds[static_cast<std::size_t>(i)];
+      p.status = "not found";
+      p.values["reason"] = "no compared foot has a point at this speed";
+    } else {
+      p = stored[static_cast<std::size_t>(best)][static_cast<std::size_t>(i)];
+      p.key = {0, i};
+      if (std::isfinite(ref) && ref > 0.0) p.values["saving"] = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
+    }
+    if (std::isfinite(ref)) p.values["reference_f_mech"] = ref;
+    ctx.store_point(p);
+  }
+  for (int k = 0; k < feet; ++k) {
+    const studies::FootSweepSummary& s = r.feet[static_cast<std::size_t>(k)];
+    storage::SolutionPoint p;
+    p.key = {feet + 1, k};
+    p.parameter = 1 + k;
+    p.objective = s.mean_f_mech;
+    p.status = s.common_speeds > 0 ? "ok" : "no common speeds";
+    p.values["foot"] = s.name;
+    p.values["reference"] = k == 0;
+    p.values["mean_f_mech"] = std::isfinite(s.mean_f_mech) ? nlohmann::json(s.mean_f_mech) : nlohmann::json(nullptr);
+    p.values["saving"] = std::isfinite(s.saving) ? nlohmann::json(s.saving) : nlohmann::json(nullptr);
+    p.values["common_speeds"] = s.common_speeds;
+    p.values["speeds_found"] = s.speeds_found;
+    p.values["speeds"] = speeds;
+    p.values["best_fitted"] = k == r.best_mean_foot;
+    p.values["sweep_seconds"] = s.seconds;
+    p.values["curves"] = s.curves;
+    p.values["foot_spec"] = foot::to_json(job.feet[static_cast<std::size_t>(k)]);
+    if (k == 0) {
+      p.values["envelope_saving"] = std::isfinite(r.envelope_saving) ? nlohmann::json(r.envelope_saving) : nlohmann::json(nullptr);
+      p.values["envelope_common_speeds"] = r.envelope_common_speeds;
+      p.values["comparison_seconds"] = r.seconds;
+    }
+    ctx.store_point(p);
+  }
+}
+
+}  // namespace
+
+JobKind foot_comparison_kind() {
+  std::vector<std::string> fields;
+  for (const std::string& f : walker_job_fields(true))
+    if (f != "foot" && f != "start" && f != "free_parameters") fields.push_back(f);
+  fields.insert(fields.end(), {"feet", "reference", "continuation"});
+  return {"foot_comparison", {"walker"}, fields, [](const nlohmann::json& spec) { parse_comparison_job(spec); },
+          run_comparison, [](const nlohmann::json& spec) {
+            const ComparisonJob j = parse_comparison_job(spec);
+            JobCost total;
+            for (const foot::FootSpec& f : j.feet) {
+              WalkerJob w = j.walker;
+              w.foot = f;
+              const JobCost c =
+                  walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.seed_speeds.size()));
+              total.seconds += c.seconds;
+              total.memory_bytes = std::max(total.memory_bytes, c.memory_bytes);
+              total.field = c.field;
+            }
+            total.breakdown = std::to_string(j.feet.size()) + " speed sweeps (the reference and the feet) of " +
+                              std::to_string(j.walker.speeds.size()) + " speeds";
+            if (total.field.empty()) total.field = "feet";
+            return total;
+          }};
+}
+
+}  // namespace cyclopt::service

@@ -1,0 +1,79 @@
+#pragma once
+// The foot comparison of seed 001 section 9.2 (Fig. 9.9, 9.12, 9.14, 9.17, 9.19a): one chapter-9
+// speed sweep (speed_sweep.hpp) per foot over the same grid, then per grid speed the best foot
+// (lowest f_mech, eq. 5.102, of the feet being compared, the reference excluded) and per foot its
+// mean f_mech and the saving against the reference feet (the seed: point feet, Table D.1):
+//   saving = 1 - mean(f_mech of the foot) / mean(f_mech of the reference),
+// both means over the grid speeds where both have a point (the seed: "Der Mittelwert ueber den
+// gesamten Geschwindigkeitsbereich ist um 64 % geringer", section 9.2.3). The envelope (best foot
+// per speed) gets the same saving. Unlike the seed, no solution is excluded by hand (the seed
+// drops toe- and heel-walking optima below 0.8 m/s, Fig. 9.10a and 9.15).
+#include "cyclopt/studies/speed_sweep.hpp"
+#include "cyclopt/walker/gait_problem.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cyclopt::studies {
+
+struct ComparedFoot {
+  std::string name;                  // e.g. "P2-shoes-left-HMT-SG" or "point"
+  walker::WalkerModel<double> model;
+};
+
+struct FootComparisonOptions {
+  SpeedSweepOptions sweep;           // speeds, starts, continuation, ... for every foot
+  std::size_t reference = 0;         // index into the feet: what savings are measured against
+                                     // (swept first is best: a stopped comparison keeps its savings)
+};
+
+// One foot's sweep, reduced to its best point per speed.
+struct FootSweepSummary {
+  std::string name;
+  std::vector<BestPoint> best;         // one per grid speed (speed_sweep's best)
+  std::vector<double> f_mech;          // per grid speed; NaN where no point was found
+  int speeds_found = 0;
+  double mean_f_mech = 0.0;            // over the speeds shared with the reference (NaN if none)
+  int common_speeds = 0;               // that mean's speed count
+  double saving = 0.0;                 // against the reference, over the same speeds (0 for the reference)
+  double seconds = 0.0;                // wall time of its sweep
+  int curves = 0;
+  bool stopped = false;                // on_point asked to stop during its sweep
+};
+
+struct FootComparisonResult {
+  std::vector<double> speeds;
+  std::vector<FootSweepSummary> feet;  // in the order given
+  std::size_t reference = 0;
+  std::vector<int> best_foot;          // per speed: index of the best compared foot, -1 if none has a point
+  std::vector<double> envelope_f_mech; // per speed: its f_mech (NaN where none)
+  double envelope_saving = 0.0;        // of the envelope against the reference (common speeds)
+  int envelope_common_speeds = 0;
+  int best_mean_foot = -1;             // the compared foot with the largest saving among those
+                                       // reaching every speed the reference reaches (else among all)
+  double seconds = 0.0;
+};
+
+// Mean f_mech and saving of every foot against feet[reference]; the per-speed winners and the
+// envelope. Throws std::invalid_argument if reference is not an index into feet.
+FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<FootSweepSummary> feet, std::size_t reference);
+
+// Reduces one finished sweep: f_mech from the gait at each best point's x (so also for an f_usq
+// objective); mean and saving are left to summarise_feet.
+FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerModel<double>& model,
+                                 const walker::GaitProblemOptions& problem, const SpeedSweepResult& sweep);
+
+// Sweeps the feet one after another (each sweep's multistarts run in parallel threads).
+// on_point(foot index, point) gets every new curve point of the running sweep; on_foot(index,
+// summary, sweep) each finished sweep. Either returning false stops the comparison; the result
+// then holds the feet done so far.
+using FootPointCallback = std::function<bool(std::size_t foot, const CurvePoint& point)>;
+using FootDoneCallback =
+    std::function<bool(std::size_t foot, const FootSweepSummary& summary, const SpeedSweepResult& sweep)>;
+FootComparisonResult compare_feet(const std::vector<ComparedFoot>& feet, const walker::GaitProblemOptions& problem,
+                                  const FootComparisonOptions& options, const FootPointCallback& on_point = {},
+                                  const FootDoneCallback& on_foot = {});
+
+}  // namespace cyclopt::studies

@@ -1,0 +1,67 @@
+// Figures of a foot_comparison job (plot/foot_comparison_figures.hpp) from a job document in the
+// layout foot_comparison_kind.hpp stores: every foot's curve, the reference dashed black, the
+// envelope, outlines of the rolling feet only; SVG and PNG are written.
+#include "cyclopt/plot/foot_comparison_figures.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace cyclopt;
+
+namespace {
+
+nlohmann::json row(int curve, int point, double parameter, nlohmann::json values) {
+  return {{"curve", curve}, {"point", point}, {"parameter", parameter}, {"status", "ok"}, {"values", std::move(values)}};
+}
+
+nlohmann::json comparison_document() {
+  const std::vector<std::string> feet = {"point", "P2-shoes-left-HMT-SG", "P1-shoes-left-HM-SG"};
+  const double f[3][2] = {{0.04, 0.05}, {0.015, 0.02}, {0.016, 0.018}};
+  nlohmann::json solutions = nlohmann::json::array();
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 2; ++i) solutions.push_back(row(1 + k, i, 1.0 + 0.5 * i, {{"foot", feet[k]}, {"f_mech", f[k][i]}}));
+    solutions.push_back(row(4, k, 1 + k, {{"foot", feet[k]}, {"foot_spec", foot::to_json(foot::foot_preset(feet[k]).spec)},
+                                          {"reference", k == 0}, {"best_fitted", k == 2}, {"saving", k == 0 ? 0.0 : 0.6},
+                                          {"envelope_saving", 0.62}}));
+  }
+  solutions.push_back(row(0, 0, 1.0, {{"foot", feet[1]}, {"f_mech", 0.015}}));
+  solutions.push_back(row(0, 1, 1.5, {{"foot", feet[2]}, {"f_mech", 0.018}}));
+  return {{"id", 7}, {"scene", "walker"}, {"task", "foot_comparison"}, {"solutions", solutions}};
+}
+
+}  // namespace
+
+TEST(FootComparisonFigures, EveryFootTheReferenceAndTheEnvelope) {
+  const plot::FootComparisonCurves c = plot::foot_comparison_curves(comparison_document());
+  ASSERT_EQ(c.feet.size(), 3u);
+  EXPECT_TRUE(c.feet[0].reference);
+  EXPECT_EQ(c.feet[1].f_mech, (std::vector<double>{0.015, 0.02}));
+  EXPECT_EQ(c.envelope_f_mech, (std::vector<double>{0.015, 0.018}));
+  const plot::LineChart chart = plot::foot_comparison_chart(c);
+  ASSERT_EQ(chart.series.size(), 4u);  // three feet and the envelope
+  EXPECT_TRUE(chart.series[0].dashed);
+  EXPECT_EQ(chart.series[0].color->r, 0.0);
+  EXPECT_NE(chart.series.back().label.find("envelope"), std::string::npos);
+  EXPECT_NE(chart.series[2].label.find("best"), std::string::npos);
+  const plot::Scene outlines = plot::foot_outlines_scene(c);
+  EXPECT_EQ(outlines.shapes.size(), 2u);  // point feet have no outline
+  // Side by side: the second outline lies right of the first.
+  double max_first = -1e9, min_second = 1e9;
+  for (const auto& p : outlines.shapes[0].points) max_first = std::max(max_first, p[0]);
+  for (const auto& p : outlines.shapes[1].points) min_second = std::min(min_second, p[0]);
+  EXPECT_LT(max_first, min_second);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cyclopt_foot_comparison_figures";
+  for (const plot::Figure& f : plot::foot_comparison_figures(comparison_document()))
+    for (const std::string& path : plot::write_figure(f, dir.string())) EXPECT_GT(std::filesystem::file_size(path), 1000u);
+}
+
+TEST(FootComparisonFigures, RejectsOtherJobs) {
+  nlohmann::json d = comparison_document();
+  d["task"] = "sweep";
+  EXPECT_THROW(plot::foot_comparison_curves(d), std::invalid_argument);
+  d = comparison_document();
+  d["solutions"] = nlohmann::json::array();
+  EXPECT_THROW(plot::foot_comparison_curves(d), std::invalid_argument);
+}
