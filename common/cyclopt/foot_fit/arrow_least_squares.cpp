@@ -106,8 +106,11 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
       for (Eigen::Index j = 0; j < N; ++j)
         st.local[j] = -(nb.local_gradient[j] + nb.B.row(j).dot(st.global)) / (nb.a[j] + lam * dl[j]);
       double jd2 = 0.0;
-      for (Eigen::Index j = 0; j < N; ++j)
-        jd2 += (ev.local_jacobian.col(j) * st.local[j] + ev.global_jacobian.middleRows(2 * j, 2) * st.global).squaredNorm();
+      for (Eigen::Index j = 0; j < N; ++j) {
+        Eigen::Vector2d jd = ev.local_jacobian.col(j) * st.local[j];
+        jd.noalias() += ev.global_jacobian.middleRows(2 * j, 2) * st.global;
+        jd2 += jd.squaredNorm();
+      }
       st.predicted = -(nb.global_gradient.dot(st.global) + nb.local_gradient.dot(st.local) + 0.5 * jd2);
       return st;
     };
@@ -126,7 +129,13 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
       const Eigen::VectorXd new_global = global + st.global, new_local = local + st.local;
       const bool valid = st.local.allFinite() && st.global.allFinite();
       ++s.evaluations;
-      if (valid && residual(new_global, new_local, true, trial) && 0.5 * trial.r.squaredNorm() < s.cost) {
+      // Trial points are evaluated without the Jacobian; an accepted one is evaluated again with it.
+      bool better = valid && residual(new_global, new_local, false, trial) && 0.5 * trial.r.squaredNorm() < s.cost;
+      if (better) {
+        ++s.evaluations;
+        better = residual(new_global, new_local, true, trial);
+      }
+      if (better) {
         const double new_cost = 0.5 * trial.r.squaredNorm();
         const double step = std::max(st.global.lpNorm<Eigen::Infinity>(), N ? st.local.lpNorm<Eigen::Infinity>() : 0.0);
         const double size = std::max(global.lpNorm<Eigen::Infinity>(), N ? local.lpNorm<Eigen::Infinity>() : 0.0);

@@ -176,28 +176,68 @@ ArrowResidual rolling_ankle_residual(foot::FootModel model, const std::vector<An
   for (const AnkleTrack& t : tracks) N += t.samples();
   return [model, &tracks, P, K, N](const Eigen::VectorXd& global, const Eigen::VectorXd& local, bool with_jacobian,
                                    ArrowEvaluation& out) {
-    foot::FootParameters<D> p(P);
-    for (int i = 0; i < P; ++i) p[i] = D::variable(global[i], i);
-    const foot::FootProfile<D> prof = foot::make_profile(model, p);
-    const foot::RollingContact<D> c0 = foot::rolling_contact(prof, D(0.0));
+    const foot::FootParameters<double> p = global.head(P);
+    const foot::FootProfile<double> prof = foot::make_profile(model, p);
+    const double f0 = foot::rolling_contact(prof, 0.0).F;
     out.r.resize(2, N);
-    if (with_jacobian) {
-      out.local_jacobian.resize(2, N);
-      out.global_jacobian.setZero(2 * N, P + K);
-    }
     for (int k = 0, j = 0; k < K; ++k)
       for (int i = 0; i < tracks[k].samples(); ++i, ++j) {
-        const foot::RollingContact<D> c = foot::rolling_contact(prof, D(local[j]));
-        out.r(0, j) = global[P + k] + c.F.v - c0.F.v - tracks[k].x[i];  // eq. (4.15a) / (4.20a)
-        out.r(1, j) = c.dF.v - tracks[k].z[i];                          // eq. (4.15b) / (4.20b)
-        if (!with_jacobian) continue;
-        out.local_jacobian(0, j) = c.dF.v;
-        out.local_jacobian(1, j) = c.ddF.v;
-        out.global_jacobian.block(2 * j, 0, 1, P) = (c.F.d - c0.F.d).head(P).transpose();
-        out.global_jacobian.block(2 * j + 1, 0, 1, P) = c.dF.d.head(P).transpose();
+        const foot::RollingContact<double> c = foot::rolling_contact(prof, local[j]);
+        out.r(0, j) = global[P + k] + c.F - f0 - tracks[k].x[i];  // eq. (4.15a) / (4.20a)
+        out.r(1, j) = c.dF - tracks[k].z[i];                      // eq. (4.15b) / (4.20b)
+      }
+    if (!with_jacobian) return out.r.allFinite();
+    // F is a sum over transitions of l_i times a function of (theta - delta_i, k_i) (eq. 3.19 /
+    // 3.22). Per sample, each transition is differentiated in (delta_i, k_i) with Dual<2> at unit
+    // length; the chain to p goes through d(l_i, delta_i, k_i)/dp, once per evaluation from the
+    // profile built in Dual<9>.
+    using D2 = ad::Dual<2>;
+    foot::FootParameters<D> pd(P);
+    for (int i = 0; i < P; ++i) pd[i] = D::variable(global[i], i);
+    const foot::FootProfile<D> prof_d = foot::make_profile(model, pd);
+    const int T = prof.transition_count;
+    // Rows of d(l, delta, k)/dp per transition.
+    using Rows3 = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, foot::kMaxFootParameters>;
+    using Rows2 = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, foot::kMaxFootParameters>;
+    Rows3 dtr[4];
+    for (int t = 0; t < T; ++t) {
+      dtr[t].resize(3, P);
+      dtr[t].row(0) = prof_d.transitions[t].length.d.head(P).transpose();
+      dtr[t].row(1) = prof_d.transitions[t].angle.d.head(P).transpose();
+      dtr[t].row(2) = prof_d.transitions[t].k.d.head(P).transpose();
+    }
+    // d[F, F'] / d(l, delta, k) of transition t at theta, from its unit-length contribution.
+    auto transition_partials = [&](int t, double theta, Eigen::Matrix<double, 2, 3>& out_partials) {
+      const foot::Transition<double>& tr = prof.transitions[t];
+      const foot::Transition<D2> unit{D2(1.0), D2::variable(tr.angle, 0), D2::variable(tr.k, 1)};
+      foot::RollingContact<D2> u{D2(0.0), D2(0.0), D2(0.0), D2(0.0)};
+      foot::detail::add_transition(unit, prof.periodic_terms, D2(theta), u);
+      out_partials << u.F.v, tr.length * u.F.d[0], tr.length * u.F.d[1], u.dF.v, tr.length * u.dF.d[0], tr.length * u.dF.d[1];
+    };
+    Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, foot::kMaxFootParameters> df0 =
+        Eigen::RowVectorXd::Zero(P);
+    Eigen::Matrix<double, 2, 3> partials;
+    for (int t = 0; t < T; ++t) {
+      transition_partials(t, 0.0, partials);
+      df0 += partials.row(0) * dtr[t];
+    }
+    out.local_jacobian.resize(2, N);
+    out.global_jacobian.setZero(2 * N, P + K);
+    for (int k = 0, j = 0; k < K; ++k)
+      for (int i = 0; i < tracks[k].samples(); ++i, ++j) {
+        const foot::RollingContact<double> c = foot::rolling_contact(prof, local[j]);
+        out.local_jacobian(0, j) = c.dF;
+        out.local_jacobian(1, j) = c.ddF;
+        Rows2 dp = Rows2::Zero(2, P);
+        for (int t = 0; t < T; ++t) {
+          transition_partials(t, local[j], partials);
+          dp.noalias() += partials * dtr[t];
+        }
+        dp.row(0) -= df0;
+        out.global_jacobian.block(2 * j, 0, 2, P) = dp;
         out.global_jacobian(2 * j, P + k) = 1.0;
       }
-    return out.r.allFinite() && (!with_jacobian || (out.local_jacobian.allFinite() && out.global_jacobian.allFinite()));
+    return out.r.allFinite() && out.local_jacobian.allFinite() && out.global_jacobian.allFinite();
   };
 }
 

@@ -31,7 +31,8 @@ FitBounds widened_to_contain(FitBounds bounds, const foot::FootParameters<double
 
 // The residual function of eq. (4.16) / (4.21) for the arrow solver: globals = [p (layout
 // order), x_off,1..K], locals = all theta_F,k,j trial by trial. Exact Jacobian: derivatives by
-// p through Dual<9> on the foot library, by theta from F' and F''.
+// p from Dual<2> per transition (delta_i, k_i; F is linear in l_i) chained with the profile's
+// d(l, delta, k)/dp in Dual<9>, by theta from F' and F''.
 ArrowResidual rolling_ankle_residual(foot::FootModel model, const std::vector<AnkleTrack>& tracks);
 
 struct ParameterEstimate {
