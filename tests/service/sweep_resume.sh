@@ -62,7 +62,7 @@ STEP=$(awk -v n="$(sql "$A" "SELECT count(*) FROM checkpoints")" -v s="$SPREAD" 
 for k in 1 2 3; do
   # Kill once this attempt has recorded STEP new entries (finished solves or runs) and a bit more.
   wait_for 600 bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -ge $((PREV_CP + STEP)) ]" || fail "attempt $k recorded too little"
-  sleep "0.$((RANDOM % 9 + 1))"
+  sleep "0.$((RANDOM % 3 + 1))"
   kill -9 "$SERVER"; wait "$SERVER" 2>/dev/null || true; SERVER=""
   STATE=$(sql "$B" "SELECT state FROM jobs")
   CP=$(sql "$B" "SELECT count(*) FROM checkpoints") R=$(sql "$B" "SELECT count(*) FROM solutions")
