@@ -76,8 +76,7 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   mo.solver.on_iteration = stop_requests(ctx);
   mo.solver.should_stop = stop_predicate(ctx);
   const studies::SweepJournal journal = sweep_journal(ctx);
-  mo.recorded_run = [&journal](int i) { return journal.find_solve(0, i); };
-  mo.on_run_finished = [&journal](int i, const nlp::SolverSummary& run) { journal.record_solve(0, i, run); };
+  studies::journal_multistart(mo, journal, 0);
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
                        .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
   const nlp::MultistartResult r = nlp::multistart(

@@ -5,7 +5,6 @@
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -93,15 +92,8 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
   // is only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
   mo.solver.sqp.difference_hessian = true;
   const int batch = batches_++;
-  std::atomic<int> resumed{0};  // recorded_run is called from the worker threads
-  if (const SweepJournal& j = o_.journal; j.find_solve)
-    mo.recorded_run = [&j, &resumed, batch](int i) {
-      std::optional<nlp::SolverSummary> run = j.find_solve(batch, i);
-      if (run) ++resumed;
-      return run;
-    };
-  if (const SweepJournal& j = o_.journal; j.record_solve)
-    mo.on_run_finished = [&j, batch](int i, const nlp::SolverSummary& run) { j.record_solve(batch, i, run); };
+  std::atomic<int> resumed{0};
+  journal_multistart(mo, o_.journal, batch, &resumed);
   const int n = static_cast<int>(starts.size());
   const std::clock_t cpu = std::clock();
   nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },

@@ -9,8 +9,10 @@
 // Empty functions: nothing is reused or recorded.
 
 #include "cyclopt/continuation/solution_curve.hpp"
+#include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/nlp/solver_options.hpp"
 
+#include <atomic>
 #include <functional>
 #include <optional>
 
@@ -22,5 +24,22 @@ struct SweepJournal {
   std::function<std::optional<continuation::ContinuationResult>(int run)> find_run;
   std::function<void(int run, const continuation::ContinuationResult& result)> record_run;
 };
+
+// Makes a multistart take the solves of batch `batch` that the journal holds instead of solving
+// them, and record the ones it finishes; *resumed (when given) counts the solves taken over (it is
+// incremented from the multistart's worker threads). The journal must outlive the multistart.
+inline void journal_multistart(nlp::MultistartOptions& options, const SweepJournal& journal, int batch,
+                               std::atomic<int>* resumed = nullptr) {
+  if (journal.find_solve)
+    options.recorded_run = [&journal, resumed, batch](int i) {
+      std::optional<nlp::SolverSummary> run = journal.find_solve(batch, i);
+      if (run && resumed) ++*resumed;
+      return run;
+    };
+  if (journal.record_solve)
+    options.on_run_finished = [&journal, batch](int i, const nlp::SolverSummary& run) {
+      journal.record_solve(batch, i, run);
+    };
+}
 
 }  // namespace cyclopt::studies
