@@ -1,9 +1,7 @@
-// Foot specifications in JSON: round trip, presets, and rejection of bad input with errors that
-// name the field and the admissible range.
-#include "cyclopt/foot/convexity_constraints.hpp"
+// Foot specifications in JSON: round trip of every preset, rejection of bad input with errors that
+// name the field and the admissible range, and the schema against the parameter layout.
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/foot/foot_spec.hpp"
-#include "random_feet.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -11,14 +9,15 @@
 #include <algorithm>
 #include <fstream>
 
-namespace cyclopt::foot {
+namespace cyclopt::io {
 namespace {
 
+using namespace foot;
 using nlohmann::json;
 
 json p1_hm() { return to_json(foot_preset("P1-barefoot-left-HM").spec); }
 
-TEST(FootSpec, RoundTripsEveryPreset) {
+TEST(FootSpecJson, RoundTripsEveryPreset) {
   for (const FootPreset& p : foot_presets()) {
     const FootSpec back = foot_spec_from_json(to_json(p.spec));
     EXPECT_EQ(back.model, p.spec.model);
@@ -38,7 +37,7 @@ void expect_rejected(const json& j, const std::string& field, const std::string&
   }
 }
 
-TEST(FootSpec, RejectsBadInputNamingFieldAndRange) {
+TEST(FootSpecJson, RejectsBadInputNamingFieldAndRange) {
   expect_rejected(json::array(), "foot", "JSON object");
   expect_rejected(json{{"h_F", 0.1}}, "foot.model", "required");
   expect_rejected(json{{"model", "XYZ"}}, "foot.model", "\"HMT\"");
@@ -81,43 +80,8 @@ TEST(FootSpec, RejectsBadInputNamingFieldAndRange) {
   expect_rejected(j, "foot.h_F", "must be a finite number in [0, 0.5] m");
 }
 
-TEST(FootSpec, UnknownPresetListsKnownOnes) {
-  try {
-    foot_preset("P9");
-    ADD_FAILURE();
-  } catch (const SpecError& e) {
-    EXPECT_NE(std::string(e.what()).find("P2-shoes-left-HMT"), std::string::npos);
-  }
-}
-
-// The linear conditions (3.21/3.24) hold for every admissible random foot and fail for
-// parameters that violate the documented ranges.
-TEST(ConvexityConstraints, HoldForAdmissibleFeet) {
-  testing::RandomFeet rnd(3);
-  for (int draw = 0; draw < 1000; ++draw) {
-    const FootSpec s = rnd.any();
-    const LinearInequalities li = convexity_constraints(s.model);
-    ASSERT_EQ(li.A.cols(), s.parameters.size());
-    ASSERT_EQ(static_cast<std::size_t>(li.A.rows()), li.names.size());
-    const Eigen::VectorXd slack = li.A * s.parameters + li.b;
-    EXPECT_GE(slack.minCoeff(), 0.0);
-  }
-  FootSpec bad = foot_preset("P2-shoes-left-HMT").spec;
-  bad.parameters[hmt::gamma_F] = 2.0;  // beyond pi/2
-  const LinearInequalities li = convexity_constraints(FootModel::hmt);
-  EXPECT_LT((li.A * bad.parameters + li.b).minCoeff(), 0.0);
-  EXPECT_EQ(li.A.rows(), 11);                              // eq. (3.24) has 11 rows
-  EXPECT_EQ(convexity_constraints(FootModel::hm).A.rows(), 7);  // eq. (3.21) has 7 rows
-}
-
-}  // namespace
-}  // namespace cyclopt::foot
-
-namespace cyclopt::foot {
-namespace {
-
 // proto/schemas/foot.schema.json states the same fields and ranges as parameter_layout().
-TEST(FootSchema, MatchesTheParameterLayout) {
+TEST(FootSpecJson, SchemaMatchesTheParameterLayout) {
   std::ifstream in(std::string(CYCLOPT_SOURCE_DIR) + "/proto/schemas/foot.schema.json");
   ASSERT_TRUE(in) << "schema file missing";
   const nlohmann::json schema = nlohmann::json::parse(in);
@@ -138,4 +102,4 @@ TEST(FootSchema, MatchesTheParameterLayout) {
 }
 
 }  // namespace
-}  // namespace cyclopt::foot
+}  // namespace cyclopt::io

@@ -3,6 +3,7 @@
 // envelope, outlines of the rolling feet only; SVG and PNG are written.
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ nlohmann::json comparison_document() {
   nlohmann::json solutions = nlohmann::json::array();
   for (int k = 0; k < 3; ++k) {
     for (int i = 0; i < 2; ++i) solutions.push_back(row(1 + k, i, 1.0 + 0.5 * i, {{"foot", feet[k]}, {"f_mech", f[k][i]}}));
-    solutions.push_back(row(4, k, 1 + k, {{"foot", feet[k]}, {"foot_spec", foot::to_json(foot::foot_preset(feet[k]).spec)},
+    solutions.push_back(row(4, k, 1 + k, {{"foot", feet[k]}, {"foot_spec", io::to_json(foot::foot_preset(feet[k]).spec)},
                                           {"reference", k == 0}, {"best_fitted", k == 2}, {"saving", k == 0 ? 0.0 : 0.6},
                                           {"envelope_saving", 0.62}}));
   }

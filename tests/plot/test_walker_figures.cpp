@@ -4,7 +4,8 @@
 // `cyclopt report` work on a results database written through the store API.
 // The gaits are automatic starting gaits (walker::starting_gait), real but not optimal: cheap.
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/io/gait_json.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
@@ -92,7 +93,7 @@ StoredJob starting_gaits(const std::string& foot, const std::vector<double>& spe
     storage::SolutionPoint p;
     p.key = {0, static_cast<int>(i)};
     p.parameter = speeds[i];
-    nlohmann::json g = walker::gait_to_json(sg.gait, true);
+    nlohmann::json g = io::gait_to_json(sg.gait, true);
     p.trajectory = g["trajectory"];
     g.erase("trajectory");
     p.values["gait"] = g;
@@ -260,7 +261,7 @@ TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) 
 
 TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   nlohmann::json result;
-  result["task"] = giant_swing::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
+  result["task"] = io::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
   result["support_values_Nm"] = {0.0, 60.0, -40.0, 0.0};
   const Scene s = giant_swing_stroboscope(giant_swing::appendix_b_gymnast(), result, 25.0);
   ASSERT_GT(s.shapes.size(), 20u);  // at least 10 frames of two segments, plus two paths

@@ -1,6 +1,7 @@
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 
 #include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ FootComparisonCurves foot_comparison_curves(const nlohmann::json& doc) {
     if (!v.contains("foot_spec")) continue;
     ComparedFootCurve f;
     f.name = v.value("foot", std::string("?"));
-    f.spec = foot::foot_spec_from_json(v["foot_spec"], "foot_spec");
+    f.spec = io::foot_spec_from_json(v["foot_spec"], "foot_spec");
     f.reference = v.value("reference", false);
     f.best_fitted = v.value("best_fitted", false);
     f.saving = number_or_nan(v, "saving");

@@ -1,6 +1,7 @@
 #include "cyclopt/service/foot_comparison_kind.hpp"
 
 #include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -184,7 +185,7 @@ void run_comparison(const nlohmann::json& spec, JobContext& ctx) {
     p.values["best_fitted"] = k == r.best_mean_foot;
     p.values["sweep_seconds"] = s.seconds;
     p.values["curves"] = s.curves;
-    p.values["foot_spec"] = foot::to_json(job.feet[static_cast<std::size_t>(k)]);
+    p.values["foot_spec"] = io::to_json(job.feet[static_cast<std::size_t>(k)]);
     if (k == 0) {
       p.values["envelope_saving"] = std::isfinite(r.envelope_saving) ? nlohmann::json(r.envelope_saving) : nlohmann::json(nullptr);
       p.values["envelope_common_speeds"] = r.envelope_common_speeds;

@@ -11,7 +11,7 @@
 //   service::JobKind walker_sweep_kind() {
 //     return {"sweep", {"walker"}, {"foot", "speeds"},
 //       [](const nlohmann::json& spec) {            // throw SpecError{"speeds", "..."} on bad input
-//         foot::foot_spec_from_json(spec.at("foot"), "foot");
+//         io::foot_spec_from_json(spec.at("foot"), "foot");
 //         service::parse_value_range(spec.at("speeds"), "speeds", 0.05, 5.0);
 //       },
 //       [](const nlohmann::json& spec, service::JobContext& ctx) {

@@ -1,5 +1,6 @@
 #include "cyclopt/service/walker_points.hpp"
 
+#include "cyclopt/io/gait_json.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <algorithm>
@@ -12,7 +13,7 @@ storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, storag
   storage::SolutionPoint p;
   p.key = key;
   p.parameter = parameter;
-  nlohmann::json g = walker::gait_to_json(gait, true);
+  nlohmann::json g = io::gait_to_json(gait, true);
   if (g.contains("trajectory")) {
     p.trajectory = g["trajectory"];
     g.erase("trajectory");
@@ -30,7 +31,7 @@ storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKe
   storage::SolutionPoint p = point_of(opt.gait, key, parameter);
   p.iterations = opt.summary.iterations;
   p.status = nlp::to_string(opt.summary.termination);
-  p.values["solver"] = walker::summary_to_json(opt.summary);
+  p.values["solver"] = io::summary_to_json(opt.summary);
   p.values["start"] = opt.start;
   p.values["start_objective"] = opt.start_objective;
   return p;
