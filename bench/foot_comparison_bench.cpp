@@ -12,6 +12,7 @@
 
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/service/foot_comparison_kind.hpp"
+#include "cyclopt/service/job_spec.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -97,13 +98,14 @@ int main(int argc, char** argv) {
     for (std::string name; std::getline(ss, name, ',');) spec["feet"].push_back(name);
   }
   const std::string out_dir = argv[5];
-  const service::JobKind kind = service::foot_comparison_kind();
-  kind.validate(spec);
+  service::JobKindRegistry kinds;
+  kinds.add(service::foot_comparison_kind());
+  const service::ValidatedJobSpec job = service::validate_job_spec(spec, kinds);
   std::printf("foot_comparison_bench: %s; %s at start\nspec: %s\n", bench::machine_line().c_str(),
               bench::load_average().c_str(), spec.dump().c_str());
   const double cpu0 = bench::cpu_seconds();
   MemoryJobContext ctx;
-  kind.run(spec, ctx);
+  job.run(ctx);
   const double wall = ctx.elapsed(), cpu = bench::cpu_seconds() - cpu0;
   std::printf("wall %.1f s, CPU %.1f s, %lld solver iterations; %s at end\n\n", wall, cpu, ctx.iterations,
               bench::load_average().c_str());

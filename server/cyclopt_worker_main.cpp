@@ -10,9 +10,9 @@
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
 #include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/spec_fields.hpp"
 #include "remote/file_job_context.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -38,15 +38,21 @@ int main(int argc, char** argv) {
   try {
     spool.write_started(std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
     const server::remote::UnitSpec unit = spool.read_spec();
-    const nlohmann::json spec = nlohmann::json::parse(unit.spec_json, nullptr, false);
-    if (spec.is_discarded()) throw std::runtime_error("unit.json: the job spec is not valid JSON");
     const service::JobKindRegistry kinds = service::builtin_job_kinds();
     server::remote::FileJobContext ctx(spool, unit, 2.0);
     server::remote::UnitOutcome outcome;
     try {
-      const service::JobKind* kind = kinds.find(unit.task);
-      if (!kind) throw std::runtime_error("task '" + unit.task + "' is not available in this cyclopt-worker");
-      kind->run(spec, ctx);
+      // The stored spec, parsed once in this process; one this worker does not accept fails the job.
+      service::ValidatedJobSpec spec;
+      try {
+        spec = service::validate_job_spec_text(unit.spec_json, kinds);
+      } catch (const service::SpecError& e) {
+        throw std::runtime_error("spec_json: the job spec is not valid in this cyclopt-worker (" + std::string(e.what()) +
+                                 ")");
+      }
+      if (spec.task != unit.task)
+        throw std::runtime_error("unit.json: task '" + unit.task + "' but its spec's task is '" + spec.task + "'");
+      spec.run(ctx);
     } catch (const std::exception& e) {
       outcome.error = e.what();
     }

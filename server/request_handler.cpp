@@ -114,12 +114,13 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
                     "spec_json: oversize, " + std::to_string(msg.spec_json.size()) + " bytes, at most " +
                         std::to_string(channels::kMaxSpecBytes) + " allowed",
                     key);
-    const service::ValidatedJobSpec v = service::validate_job_spec(service::parse_job_spec_text(msg.spec_json), kinds_);
-    const service::JobCost cost = v.kind->estimate ? v.kind->estimate(v.spec) : service::JobCost{};
+    auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(msg.spec_json, kinds_));
+    const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
     const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
+    // The parsed spec goes to the worker with the job: it is not parsed again.
     const storage::SubmitOutcome out =
-        store_.submit({msg.request_id, v.scene, v.task, msg.spec_json, sender, cost.seconds}, config_.quota);
+        pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender, cost.seconds}, config_.quota, v);
     if (out.over_quota)
       return reject(msg.request_id, "queue",
                     "queue: sender '" + sender + "' has " + std::to_string(out.queued_jobs) + " queued jobs estimated at " +

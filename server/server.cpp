@@ -6,9 +6,9 @@ namespace cyclopt::server {
 
 namespace {
 
-std::unique_ptr<JobExecutor> make_executor(const ServerConfig& config, const service::JobKindRegistry& kinds) {
+std::unique_ptr<JobExecutor> make_executor(const ServerConfig& config) {
   if (config.executor == "slurm") return std::make_unique<remote::SlurmExecutor>(config.slurm);
-  return std::make_unique<LocalExecutor>(kinds);
+  return std::make_unique<LocalExecutor>();
 }
 
 }  // namespace
@@ -22,8 +22,8 @@ Server::Server(const ServerConfig& config, const service::JobKindRegistry& kinds
       recovery_(store_.recover_interrupted()),
       owners_(keys_ ? std::optional<JobOwners>(std::in_place, *keys_, store_) : std::nullopt),
       publisher_(bus_, owners_ ? &*owners_ : nullptr),
-      executor_(make_executor(config_, kinds)),
-      pool_(config_, *executor_, store_, publisher_),
+      executor_(make_executor(config_)),
+      pool_(config_, kinds, *executor_, store_, publisher_),
       handler_(config_, kinds, store_, publisher_, pool_, keys_ ? &*keys_ : nullptr, owners_ ? &*owners_ : nullptr) {
   handler_.subscribe(bus_);
 }

@@ -3,18 +3,37 @@
 #include <cyclopt_lcm/job_done_t.hpp>
 
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt_channels.hpp"
 #include "worker_job_context.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 
 namespace cyclopt::server {
 
-WorkerPool::WorkerPool(const ServerConfig& config, const JobExecutor& executor, storage::ResultStore& store,
-                       LcmPublisher& publisher)
-    : config_(config), executor_(executor), store_(store), publisher_(publisher) {
+namespace {
+
+// The spec of a job claimed without one (queued before this server started), parsed from its
+// stored text; on failure null and `error` says why.
+std::shared_ptr<const service::ValidatedJobSpec> parse_stored_spec(const storage::JobRecord& job,
+                                                                   const service::JobKindRegistry& kinds,
+                                                                   std::string& error) {
+  try {
+    return std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(job.spec_json, kinds));
+  } catch (const service::SpecError& e) {
+    error = "spec_json: the stored spec of job " + std::to_string(job.id) + " is not valid on this server (" + e.what() +
+            ")";
+  } catch (const std::exception& e) {
+    error = "spec_json: the stored spec of job " + std::to_string(job.id) + " could not be parsed: " + e.what();
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+WorkerPool::WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, const JobExecutor& executor,
+                       storage::ResultStore& store, LcmPublisher& publisher)
+    : config_(config), kinds_(kinds), executor_(executor), store_(store), publisher_(publisher) {
   for (int i = 0; i < effective_workers(config); ++i) threads_.emplace_back([this] { work(); });
 }
 
@@ -23,9 +42,21 @@ WorkerPool::~WorkerPool() {
   for (auto& t : threads_) t.join();
 }
 
+storage::SubmitOutcome WorkerPool::submit(const storage::Submission& submission, const storage::SenderQuota& quota,
+                                          std::shared_ptr<const service::ValidatedJobSpec> spec) {
+  std::lock_guard queue(queue_mutex_);
+  const storage::SubmitOutcome out = store_.submit(submission, quota);
+  if (!out.over_quota && !out.duplicate) parsed_[out.job_id] = std::move(spec);
+  return out;
+}
+
 void WorkerPool::wake() { wake_.notify_all(); }
 
 void WorkerPool::cancel(std::int64_t job_id) {
+  {
+    std::lock_guard queue(queue_mutex_);
+    parsed_.erase(job_id);  // cancelled while queued: it is never claimed
+  }
   std::lock_guard lock(mutex_);
   const auto it = cancel_flags_.find(job_id);
   if (it != cancel_flags_.end())
@@ -44,40 +75,55 @@ void WorkerPool::stop() {
   wake_.notify_all();
 }
 
+std::optional<WorkerPool::Claimed> WorkerPool::claim() {
+  if (claims_paused()) return std::nullopt;
+  std::lock_guard queue(queue_mutex_);
+  std::optional<storage::JobRecord> job = store_.claim_next();
+  if (!job) return std::nullopt;
+  Claimed c{std::move(*job), nullptr};
+  if (const auto it = parsed_.find(c.job.id); it != parsed_.end()) {
+    c.spec = std::move(it->second);
+    parsed_.erase(it);
+  }
+  return c;
+}
+
 void WorkerPool::work() {
   while (!shutdown_) {
-    std::optional<storage::JobRecord> job;
+    std::optional<Claimed> claimed;
     try {
-      if (!claims_paused()) job = store_.claim_next();
+      claimed = claim();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "cycloptd: cannot claim a job: %s\n", e.what());
     }
-    if (!job) {
+    if (!claimed) {
       std::unique_lock lock(mutex_);
       wake_.wait_for(lock, std::chrono::milliseconds(200));
       continue;
     }
-    run_job(*job);
+    run_job(claimed->job, std::move(claimed->spec));
   }
 }
 
-void WorkerPool::run_job(const storage::JobRecord& job) {
+void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const service::ValidatedJobSpec> spec) {
   auto cancel = std::make_shared<std::atomic<bool>>(job.cancel_requested);
   {
     std::lock_guard lock(mutex_);
     cancel_flags_[job.id] = cancel;
     if (early_cancels_.erase(job.id)) *cancel = true;
   }
-  const nlohmann::json spec = nlohmann::json::parse(job.spec_json, nullptr, false);
-  WorkerJobContext ctx(job, service::effective_limits(spec, config_.caps), config_.progress_hz, store_, publisher_,
-                       *cancel, shutdown_);
   std::string error;
-  try {
-    executor_.run(job, spec, ctx);
-  } catch (const std::exception& e) {
-    error = e.what();
-  } catch (...) {
-    error = "task '" + job.task + "' failed with a non-standard exception";
+  if (!spec) spec = parse_stored_spec(job, kinds_, error);
+  WorkerJobContext ctx(job, spec ? service::effective_limits(spec->common.limits, config_.caps) : config_.caps,
+                       config_.progress_hz, store_, publisher_, *cancel, shutdown_);
+  if (spec) {
+    try {
+      executor_.run(job, *spec, ctx);
+    } catch (const std::exception& e) {
+      error = e.what();
+    } catch (...) {
+      error = "task '" + job.task + "' failed with a non-standard exception";
+    }
   }
   ctx.flush_progress();
   const service::StopReason stop = ctx.stop_reason();

@@ -6,8 +6,14 @@
 // shuts down or a point could not be stored (a full disk): its stored points are kept and it
 // resumes later; its watchers get a job_done_t with state "queued" saying why. After a storage
 // failure no job is claimed for kStoreFailurePause.
+//
+// A job's spec is parsed once: submit() keeps the submission's parsed spec for the worker that
+// claims the job. A job without one (queued before this server started) is parsed from its stored
+// text when claimed; if that text no longer validates (a database edited by hand, or written by a
+// server whose kinds accepted it), the job fails with a message naming the field.
 
 #include "job_executor.hpp"
+#include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/storage/job_outcome.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "lcm_publisher.hpp"
@@ -28,17 +34,26 @@ namespace cyclopt::server {
 
 class WorkerPool {
  public:
-  WorkerPool(const ServerConfig& config, const JobExecutor& executor, storage::ResultStore& store,
-             LcmPublisher& publisher);
+  WorkerPool(const ServerConfig& config, const service::JobKindRegistry& kinds, const JobExecutor& executor,
+             storage::ResultStore& store, LcmPublisher& publisher);
   ~WorkerPool();  // stop() and join
 
+  // Queues a validated submission (storage::ResultStore::submit) with its parsed spec, which the
+  // worker that claims the new job runs.
+  storage::SubmitOutcome submit(const storage::Submission& submission, const storage::SenderQuota& quota,
+                                std::shared_ptr<const service::ValidatedJobSpec> spec);
   void wake();                          // a job was queued
   void cancel(std::int64_t job_id);     // raises the flag of a running job
   void stop();                          // running jobs checkpoint and return to the queue
 
  private:
+  struct Claimed {
+    storage::JobRecord job;
+    std::shared_ptr<const service::ValidatedJobSpec> spec;  // null: parse job.spec_json
+  };
+  std::optional<Claimed> claim();
   void work();
-  void run_job(const storage::JobRecord& job);
+  void run_job(const storage::JobRecord& job, std::shared_ptr<const service::ValidatedJobSpec> spec);
   void requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx);
   void publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
                     const std::string& error, const std::optional<storage::JobOutcome>& outcome = std::nullopt);
@@ -48,6 +63,7 @@ class WorkerPool {
   static constexpr std::chrono::seconds kStoreFailurePause{5};
 
   const ServerConfig& config_;
+  const service::JobKindRegistry& kinds_;
   const JobExecutor& executor_;
   storage::ResultStore& store_;
   LcmPublisher& publisher_;
@@ -56,6 +72,10 @@ class WorkerPool {
   std::condition_variable wake_;
   std::map<std::int64_t, std::shared_ptr<std::atomic<bool>>> cancel_flags_;  // running jobs
   std::set<std::int64_t> early_cancels_;  // cancelled after being claimed, before their flag existed
+  // Held while a job is added to the queue with its spec and while one is claimed with it, so a
+  // worker never claims a submission before its parsed spec is here.
+  std::mutex queue_mutex_;
+  std::map<std::int64_t, std::shared_ptr<const service::ValidatedJobSpec>> parsed_;  // queued jobs
   std::chrono::steady_clock::time_point claims_paused_until_{};
   std::vector<std::thread> threads_;
 };

@@ -193,7 +193,7 @@ SlurmExecutor::SlurmExecutor(SlurmOptions options) : options_(std::move(options)
   options_.spool = std::filesystem::absolute(options_.spool).string();
 }
 
-void SlurmExecutor::run(const storage::JobRecord& job, const nlohmann::json&, service::JobContext& ctx) const {
+void SlurmExecutor::run(const storage::JobRecord& job, const service::ValidatedJobSpec&, service::JobContext& ctx) const {
   Unit(options_, job, ctx).run();
 }
 

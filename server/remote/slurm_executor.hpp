@@ -19,7 +19,8 @@ namespace cyclopt::server::remote {
 class SlurmExecutor final : public JobExecutor {
  public:
   explicit SlurmExecutor(SlurmOptions options);
-  void run(const storage::JobRecord& job, const nlohmann::json& spec, service::JobContext& ctx) const override;
+  // Runs the job's stored spec text (job.spec_json) in cyclopt-worker, which parses it itself.
+  void run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const override;
 
  private:
   SlurmOptions options_;

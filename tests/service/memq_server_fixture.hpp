@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,7 +21,8 @@ class MemqServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("cyclopt_memq_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("cyclopt_memq_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));  // worktrees and parallel ctest runs do not share folders
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     config_.database = (dir_ / "results.db").string();

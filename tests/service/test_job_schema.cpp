@@ -159,7 +159,7 @@ TEST(JobSchema, EnumsAndTaskFieldsAreTheServers) {
   EXPECT_EQ(properties.at("scene").at("enum").get<std::vector<std::string>>(), service::known_scenes());
   EXPECT_EQ(properties.at("task").at("enum").get<std::vector<std::string>>(), service::known_tasks());
   EXPECT_EQ(properties.at("objective").at("enum").get<std::vector<std::string>>(), service::known_objectives());
-  const std::vector<std::string> common = {"scene", "task", "name", "objective", "solver", "limits"};
+  const std::vector<std::string>& common = service::common_job_field_names();
   for (const std::string& task : registry().tasks()) {
     const service::JobKind* kind = registry().find(task);
     std::vector<std::string> fields = common;

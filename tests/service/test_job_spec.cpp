@@ -129,7 +129,8 @@ TEST(JobSpec, ErrorsNameTheField) {
 TEST(JobSpec, LimitsAreCappedByTheServer) {
   nlohmann::json s = sweep_spec();
   s["limits"] = {{"max_wall_seconds", 10.0}, {"max_iterations", 1000000}};
-  const JobLimits l = effective_limits(s, {.max_wall_seconds = 60.0, .max_iterations = 500});
+  const JobLimits l = effective_limits(validate_job_spec(s, builtin_job_kinds()).common.limits,
+                                      {.max_wall_seconds = 60.0, .max_iterations = 500});
   EXPECT_EQ(l.max_wall_seconds, 10.0);
   EXPECT_EQ(l.max_iterations, 500);
 }

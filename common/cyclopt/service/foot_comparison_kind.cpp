@@ -33,7 +33,7 @@ std::string foot_name(const nlohmann::json& v, const foot::FootSpec& spec, const
   return spec.name.empty() ? path : spec.name;
 }
 
-ComparisonJob parse_comparison_job(const nlohmann::json& spec) {
+ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFields& common_fields) {
   for (const char* key : {"foot", "start", "free_parameters"})
     if (spec.contains(key))
       throw SpecError(key, std::string("is not a field of foot_comparison (") +
@@ -46,7 +46,7 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec) {
   common["foot"] = spec.contains("reference") ? spec["reference"] : nlohmann::json("point");
   ComparisonJob j;
   try {
-    j.walker = parse_walker_job(common, true);
+    j.walker = parse_walker_job(common, common_fields, true);
   } catch (const SpecError& e) {
     if (e.field().rfind("foot", 0) != 0) throw;
     throw SpecError("reference" + e.field().substr(4), e.what());
@@ -92,8 +92,7 @@ storage::SolutionPoint not_found(storage::PointKey key, const studies::BestPoint
   return p;
 }
 
-void run_comparison(const nlohmann::json& spec, JobContext& ctx) {
-  const ComparisonJob job = parse_comparison_job(spec);
+void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   const int feet = static_cast<int>(job.feet.size());
   const int speeds = static_cast<int>(job.walker.speeds.size());
   std::vector<studies::ComparedFoot> compared;
@@ -202,6 +201,23 @@ void run_comparison(const nlohmann::json& spec, JobContext& ctx) {
   }
 }
 
+// One speed sweep per foot, one after the other.
+JobCost comparison_cost(const ComparisonJob& j) {
+  JobCost total;
+  for (const foot::FootSpec& f : j.feet) {
+    WalkerJob w = j.walker;
+    w.foot = f;
+    const JobCost c = walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.seed_speeds.size()));
+    total.seconds += c.seconds;
+    total.memory_bytes = std::max(total.memory_bytes, c.memory_bytes);
+    total.field = c.field;
+  }
+  total.breakdown = std::to_string(j.feet.size()) + " speed sweeps (the reference and the feet) of " +
+                    std::to_string(j.walker.speeds.size()) + " speeds";
+  if (total.field.empty()) total.field = "feet";
+  return total;
+}
+
 }  // namespace
 
 JobKind foot_comparison_kind() {
@@ -209,24 +225,8 @@ JobKind foot_comparison_kind() {
   for (const std::string& f : walker_job_fields(true))
     if (f != "foot" && f != "start" && f != "free_parameters") fields.push_back(f);
   fields.insert(fields.end(), {"feet", "reference", "continuation"});
-  return {"foot_comparison", {"walker"}, fields, [](const nlohmann::json& spec) { parse_comparison_job(spec); },
-          run_comparison, [](const nlohmann::json& spec) {
-            const ComparisonJob j = parse_comparison_job(spec);
-            JobCost total;
-            for (const foot::FootSpec& f : j.feet) {
-              WalkerJob w = j.walker;
-              w.foot = f;
-              const JobCost c =
-                  walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.seed_speeds.size()));
-              total.seconds += c.seconds;
-              total.memory_bytes = std::max(total.memory_bytes, c.memory_bytes);
-              total.field = c.field;
-            }
-            total.breakdown = std::to_string(j.feet.size()) + " speed sweeps (the reference and the feet) of " +
-                              std::to_string(j.walker.speeds.size()) + " speeds";
-            if (total.field.empty()) total.field = "feet";
-            return total;
-          }};
+  return typed_job_kind<ComparisonJob>("foot_comparison", {"walker"}, fields, parse_comparison_job, run_comparison,
+                                       comparison_cost);
 }
 
 }  // namespace cyclopt::service

@@ -36,7 +36,7 @@ foot::FootSpec foot_at(const FootSweep& s, double value) {
   return f;
 }
 
-FootSweep parse(const nlohmann::json& spec) {
+FootSweep parse(const nlohmann::json& spec, const CommonJobFields&) {
   FootSweep s;
   if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
   s.base = foot_value(spec["foot"], "foot");
@@ -74,8 +74,7 @@ void delay(int ms, JobContext& ctx) {
                                                                               until - std::chrono::steady_clock::now()));
 }
 
-void run(const nlohmann::json& spec, JobContext& ctx) {
-  const FootSweep s = parse(spec);
+void run(const FootSweep& s, JobContext& ctx) {
   const int n = static_cast<int>(s.values.size());
   ctx.announce(n);
   ctx.add_curve(0, "foot sweep over " + s.parameter, s.parameter);
@@ -113,9 +112,8 @@ void run(const nlohmann::json& spec, JobContext& ctx) {
 }  // namespace
 
 JobKind foot_sweep_kind() {
-  return {"foot_sweep", {"walker"}, {"foot", "sweep", "samples", "point_delay_ms"},
-          [](const nlohmann::json& spec) { parse(spec); }, run,
-          {}};  // no estimate: at most 10000 cheap grid points
+  // No estimate: at most 10000 cheap grid points.
+  return typed_job_kind<FootSweep>("foot_sweep", {"walker"}, {"foot", "sweep", "samples", "point_delay_ms"}, parse, run);
 }
 
 }  // namespace cyclopt::service

@@ -83,8 +83,7 @@ storage::SolutionPoint bezier_point(const Model& model, const GiantSwingJob& job
   return p;
 }
 
-void run_giant_swing(const nlohmann::json& spec, JobContext& ctx) {
-  const GiantSwingJob job = parse_giant_swing_job(spec);
+void run_giant_swing(const GiantSwingJob& job, JobContext& ctx) {
   ctx.announce(1);
   ctx.add_curve(0, "giant swing: " + job.motion, "motion");
   if (ctx.already_stored_points().count({0, 0})) return;
@@ -101,9 +100,9 @@ void run_giant_swing(const nlohmann::json& spec, JobContext& ctx) {
 }  // namespace
 
 JobKind giant_swing_kind() {
-  return {"giant_swing", {"giant_swing"}, giant_swing_job_fields(),
-          [](const nlohmann::json& spec) { parse_giant_swing_job(spec); }, run_giant_swing,
-          {}};  // no estimate: the seed's tasks take about a minute whatever the options
+  // No estimate: the seed's tasks take about a minute whatever the options.
+  return typed_job_kind<GiantSwingJob>("giant_swing", {"giant_swing"}, giant_swing_job_fields(), parse_giant_swing_job,
+                                       run_giant_swing);
 }
 
 }  // namespace cyclopt::service

@@ -1,6 +1,5 @@
 #include "cyclopt/service/giant_swing_job_spec.hpp"
 
-#include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 
 #include <algorithm>
@@ -32,7 +31,7 @@ const std::vector<std::string>& giant_swing_job_fields() {
   return v;
 }
 
-GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec) {
+GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobFields& common) {
   GiantSwingJob job;
   std::vector<std::string> motion_names;
   for (const auto& [name, kind] : motions()) motion_names.push_back(name);
@@ -64,7 +63,7 @@ GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec) {
     p.free_coefficients = *n;
   if (auto n = optional_integer(options, "options", "steps", 10, 2000)) p.steps = *n;
   if (auto f = optional_number(options, "options", "min_rate_fraction", 0.0, 0.9)) p.min_rate_fraction = *f;
-  job.bezier.solver = solver_options_from_spec(spec, giant_swing::minimum_jerk_solver_options());
+  job.bezier.solver = common.solver.applied_to(giant_swing::minimum_jerk_solver_options());
   return job;
 }
 

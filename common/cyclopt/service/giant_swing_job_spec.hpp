@@ -15,6 +15,7 @@
 
 #include "cyclopt/giant_swing/minimum_jerk_swing.hpp"
 #include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/service/common_job_fields.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,7 +35,8 @@ struct GiantSwingJob {
 
 const std::vector<std::string>& giant_swing_job_fields();  // motion, method, options
 
-// Throws SpecError naming the first invalid field.
-GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec);
+// The giant-swing fields, with the solver of the common fields; throws SpecError naming the first
+// invalid field.
+GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobFields& common);
 
 }  // namespace cyclopt::service

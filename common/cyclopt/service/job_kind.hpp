@@ -1,50 +1,63 @@
 #pragma once
-// Pluggable job kinds. A job spec's "task" selects a JobKind from the registry; the server
-// validates a submission with validate() before it is queued and calls run() on a worker.
+// Pluggable job kinds. A job spec's "task" selects a JobKind from the registry. The spec is
+// parsed and validated once (validate_job_spec, job_spec.hpp): the common fields into
+// CommonJobFields, the kind's own fields by its parse() into a plain struct of the kind's choosing.
+// The server keeps that typed result from the submission to the worker that runs it; run() and
+// estimate() get the struct, never JSON.
 //
-// Adding a kind (e.g. the walker's speed sweep) takes ~20 lines:
+// Adding a kind (e.g. the walker's speed sweep) takes ~25 lines:
 //
 //   // walker_sweep_kind.hpp
 //   service::JobKind walker_sweep_kind();
 //
 //   // walker_sweep_kind.cpp
+//   struct SweepJob {
+//     std::vector<double> speeds;
+//     nlp::SolverOptions solver;
+//   };
+//
+//   SweepJob parse_sweep(const nlohmann::json& spec, const CommonJobFields& common) {
+//     if (!spec.contains("speeds")) throw SpecError("speeds", "is required (m/s, \"lo:step:hi\")");
+//     return {parse_value_range(spec["speeds"], "speeds", 0.05, 5.0),  // throws SpecError naming the field
+//             common.solver.applied_to(nlp::seed_table_6_2_options())};
+//   }
+//
+//   void run_sweep(const SweepJob& job, JobContext& ctx) {
+//     ctx.announce(int(job.speeds.size()));
+//     ctx.add_curve(0, "speed sweep", "speed");
+//     const auto done = ctx.already_stored_points();
+//     for (int i = 0; i < int(job.speeds.size()); ++i) {
+//       if (done.count({0, i})) continue;                    // resumed job: already solved
+//       if (ctx.stop_reason() != StopReason::none) return;
+//       // ... solve with job.solver, whose on_iteration is solver_progress(ctx, ...) and
+//       //     should_stop stop_predicate(ctx) (solver_progress.hpp) ...
+//       storage::SolutionPoint p;
+//       p.key = {0, i};
+//       p.parameter = job.speeds[i];
+//       p.objective = summary.objective;                    // + values, status, trajectory
+//       ctx.store_point(p);
+//     }
+//   }
+//
 //   service::JobKind walker_sweep_kind() {
-//     return {"sweep", {"walker"}, {"foot", "speeds"},
-//       [](const nlohmann::json& spec) {            // throw SpecError{"speeds", "..."} on bad input
-//         foot::foot_spec_from_json(spec.at("foot"), "foot");
-//         service::parse_value_range(spec.at("speeds"), "speeds", 0.05, 5.0);
-//       },
-//       [](const nlohmann::json& spec, service::JobContext& ctx) {
-//         const auto speeds = service::parse_value_range(spec["speeds"], "speeds", 0.05, 5.0);
-//         ctx.announce(int(speeds.size()));
-//         ctx.add_curve(0, "speed sweep", "speed");
-//         const auto done = ctx.already_stored_points();
-//         for (int i = 0; i < int(speeds.size()); ++i) {
-//           if (done.count({0, i})) continue;                    // resumed job: already solved
-//           if (ctx.stop_reason() != service::StopReason::none) return;
-//           // ... solve with service::solver_options_from_spec(spec), whose on_iteration calls
-//           //     ctx.report_progress(...), ctx.count_iterations(1) and returns
-//           //     ctx.stop_reason() == StopReason::none ...
-//           storage::SolutionPoint p;
-//           p.key = {0, i};
-//           p.parameter = speeds[i];
-//           p.objective = summary.objective;              // + values, status, trajectory
-//           ctx.store_point(p);
-//         }
-//       }};
+//     return typed_job_kind<SweepJob>("sweep", {"walker"}, {"speeds"}, parse_sweep, run_sweep);
 //   }
 //
 // and one line in builtin_job_kinds.cpp: registry.add(walker_sweep_kind());
 //
-// Contract for estimate(): it is given a spec that passed validate(); kinds whose cost grows with
-// their spec (grid size, starts, speeds) provide it.
+// Contract for parse(): throws SpecError naming the first invalid field and its admissible range;
+// everything else it throws is a server error. It is called once per submission, and once more
+// only where a job is run from its stored text (after a server restart, in cyclopt-worker).
 //
-// Contract for run(): it is given a spec that passed validate(); it returns normally when all
-// points are stored or when stop_reason() became non-none (the server then decides the job's
-// state); it throws (any std::exception) only when the job failed — the message is stored.
-// It must be re-entrant (several workers run jobs of the same kind) and must not keep state
-// between calls: everything a resumed job needs is in the store.
+// Contract for estimate(): kinds whose cost grows with their spec (grid size, starts, speeds)
+// provide it.
+//
+// Contract for run(): it returns normally when all points are stored or when stop_reason() became
+// non-none (the server then decides the job's state); it throws (any std::exception) only when
+// the job failed — the message is stored. It must be re-entrant (several workers run jobs of the
+// same kind) and must not keep state between calls: everything a resumed job needs is in the store.
 
+#include "cyclopt/service/common_job_fields.hpp"
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/service/job_cost.hpp"
 
@@ -52,21 +65,61 @@
 
 #include <functional>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cyclopt::service {
+
+// A kind's parsed spec, type-erased; typed_job_kind() gives each kind its own type back.
+class KindSpec {
+ public:
+  virtual ~KindSpec() = default;
+};
+
+template <class Spec>
+class KindSpecOf final : public KindSpec {
+ public:
+  explicit KindSpecOf(Spec spec) : spec_(std::move(spec)) {}
+  const Spec& spec() const { return spec_; }
+
+ private:
+  const Spec spec_;
+};
 
 struct JobKind {
   std::string task;                       // the spec's "task"
   std::vector<std::string> scenes;        // admissible "scene" values
   std::vector<std::string> fields;        // top-level spec keys the kind reads (besides the common ones)
-  std::function<void(const nlohmann::json& spec)> validate;        // throws SpecError
-  std::function<void(const nlohmann::json& spec, JobContext& ctx)> run;
-  // Expected time and memory of a valid spec, checked against the server's limits before the job
+  std::function<std::shared_ptr<const KindSpec>(const nlohmann::json& spec, const CommonJobFields& common)> parse;
+  std::function<void(const KindSpec& spec, JobContext& ctx)> run;
+  // Expected time and memory of a parsed spec, checked against the server's limits before the job
   // is queued (job_cost.hpp); empty: the kind's jobs are cheap (seconds, little memory).
-  std::function<JobCost(const nlohmann::json& spec)> estimate;
+  std::function<JobCost(const KindSpec& spec)> estimate;
 };
+
+// A JobKind whose parse returns a Spec and whose run and estimate take it.
+template <class Spec>
+JobKind typed_job_kind(std::string task, std::vector<std::string> scenes, std::vector<std::string> fields,
+                       std::function<Spec(const nlohmann::json&, const CommonJobFields&)> parse,
+                       std::function<void(const Spec&, JobContext&)> run,
+                       std::function<JobCost(const Spec&)> estimate = {}) {
+  // The one cast: a kind is only ever given what its own parse returned.
+  auto typed = [task](const KindSpec& s) -> const Spec& {
+    const auto* t = dynamic_cast<const KindSpecOf<Spec>*>(&s);
+    if (!t) throw std::logic_error("job kind '" + task + "' was given a spec that another kind parsed");
+    return t->spec();
+  };
+  JobKind kind{std::move(task), std::move(scenes), std::move(fields), {}, {}, {}};
+  kind.parse = [parse = std::move(parse)](const nlohmann::json& spec, const CommonJobFields& common) {
+    return std::shared_ptr<const KindSpec>(std::make_shared<const KindSpecOf<Spec>>(parse(spec, common)));
+  };
+  kind.run = [typed, run = std::move(run)](const KindSpec& s, JobContext& ctx) { run(typed(s), ctx); };
+  if (estimate) kind.estimate = [typed, estimate = std::move(estimate)](const KindSpec& s) { return estimate(typed(s)); };
+  return kind;
+}
 
 class JobKindRegistry {
  public:

@@ -8,34 +8,6 @@ namespace cyclopt::service {
 
 namespace {
 
-const std::vector<std::string> kCommonFields = {"scene", "task", "name", "objective", "solver", "limits"};
-const std::vector<std::string> kSolverFields = {"solver", "max_iterations", "optimality_tolerance",
-                                                "constraint_tolerance", "print_level"};
-const std::vector<std::string> kLimitFields = {"max_wall_seconds", "max_iterations"};
-constexpr double kMaxWallSeconds = 7 * 86400.0;
-constexpr int kMaxIterationLimit = 1000000000;
-
-void validate_solver(const nlohmann::json& spec) {
-  if (!spec.contains("solver")) return;
-  const nlohmann::json& s = object_value(spec["solver"], "solver");
-  reject_unknown_keys(s, "solver", kSolverFields);
-  if (s.contains("solver")) enum_value(s["solver"], "solver.solver", {"ipopt", "sqp"});
-  optional_integer(s, "solver", "max_iterations", 1, 100000);
-  optional_number(s, "solver", "optimality_tolerance", 1e-14, 1.0);
-  optional_number(s, "solver", "constraint_tolerance", 1e-14, 1.0);
-  optional_integer(s, "solver", "print_level", 0, 12);
-}
-
-void validate_limits(const nlohmann::json& spec) {
-  if (!spec.contains("limits")) return;
-  const nlohmann::json& l = object_value(spec["limits"], "limits");
-  reject_unknown_keys(l, "limits", kLimitFields);
-  if (l.contains("max_wall_seconds") && number_value(l["max_wall_seconds"], "limits.max_wall_seconds", 0.0,
-                                                     kMaxWallSeconds) <= 0.0)
-    throw SpecError("limits.max_wall_seconds", "must be in (0, 604800], got 0");
-  optional_integer(l, "limits", "max_iterations", 1, kMaxIterationLimit);
-}
-
 // Follows the JSON path while parsing, so a number the lexer cannot represent (1e400) is reported
 // under its field ("speed", "start[3]") rather than as an internal error.
 class FieldPathTracker final : public nlohmann::json_sax<nlohmann::json> {
@@ -140,37 +112,16 @@ ValidatedJobSpec validate_job_spec(const nlohmann::json& spec, const JobKindRegi
   if (!v.kind) throw SpecError("task", "'" + v.task + "' is not available on this server (available: " + join(registry.tasks()) + ")");
   if (std::find(v.kind->scenes.begin(), v.kind->scenes.end(), v.scene) == v.kind->scenes.end())
     throw SpecError("scene", "task '" + v.task + "' needs scene " + join(v.kind->scenes, " or ") + ", got '" + v.scene + "'");
-  std::vector<std::string> fields = kCommonFields;
+  std::vector<std::string> fields = common_job_field_names();
   fields.insert(fields.end(), v.kind->fields.begin(), v.kind->fields.end());
   reject_unknown_keys(spec, "", fields);
-  if (spec.contains("name")) string_value(spec["name"], "name", 200);
-  if (spec.contains("objective")) enum_value(spec["objective"], "objective", known_objectives());
-  validate_solver(spec);
-  validate_limits(spec);
-  v.kind->validate(spec);
-  v.spec = spec;
+  v.common = parse_common_job_fields(spec);
+  v.spec = v.kind->parse(spec, v.common);
   return v;
 }
 
-JobLimits effective_limits(const nlohmann::json& spec, const JobLimits& caps) {
-  JobLimits l = caps;
-  if (!spec.contains("limits")) return l;
-  const nlohmann::json& lim = spec["limits"];
-  if (lim.contains("max_wall_seconds")) l.max_wall_seconds = std::min(caps.max_wall_seconds, lim["max_wall_seconds"].get<double>());
-  if (lim.contains("max_iterations")) l.max_iterations = std::min(caps.max_iterations, lim["max_iterations"].get<int>());
-  return l;
-}
-
-nlp::SolverOptions solver_options_from_spec(const nlohmann::json& spec, const nlp::SolverOptions& base) {
-  nlp::SolverOptions o = base;
-  if (!spec.contains("solver")) return o;
-  const nlohmann::json& s = spec["solver"];
-  if (s.contains("solver")) o.solver = s["solver"] == "sqp" ? nlp::SolverKind::sqp : nlp::SolverKind::ipopt;
-  o.max_iterations = s.value("max_iterations", o.max_iterations);
-  o.optimality_tolerance = s.value("optimality_tolerance", o.optimality_tolerance);
-  o.constraint_tolerance = s.value("constraint_tolerance", o.constraint_tolerance);
-  o.print_level = s.value("print_level", o.print_level);
-  return o;
+ValidatedJobSpec validate_job_spec_text(const std::string& text, const JobKindRegistry& registry) {
+  return validate_job_spec(parse_job_spec_text(text), registry);
 }
 
 }  // namespace cyclopt::service

@@ -31,9 +31,9 @@ struct ContinuationJob {
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};
 };
 
-ContinuationJob parse_continuation_job(const nlohmann::json& spec) {
+ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJobFields& common) {
   ContinuationJob j;
-  j.walker = parse_walker_job(spec, true);
+  j.walker = parse_walker_job(spec, common, true);
   j.options.corrector = j.walker.solver;
   j.values = j.walker.speeds;
   if (!spec.contains("continuation")) return j;
@@ -98,14 +98,14 @@ class CurveStore {
   std::map<int, int> counts_;
 };
 
-void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
-  ContinuationJob job = parse_continuation_job(spec);
+void run_continuation(const ContinuationJob& job, JobContext& ctx) {
   const walker::WalkerModel<double> model = job.walker.model();
   walker::GaitProblemOptions po = job.walker.problem;
   po.speed = job.walker.speeds.front();
   ctx.announce(static_cast<int>(job.values.size()));
-  job.options.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "continuation over " + job.parameter});
-  job.options.corrector.should_stop = stop_predicate(ctx);
+  continuation::ContinuationOptions options = job.options;
+  options.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "continuation over " + job.parameter});
+  options.corrector.should_stop = stop_predicate(ctx);
   const continuation::ParametricProblem family = studies::walker_family(model, po, job.parameter);
   walker::GaitProblemOptions first = po;
   if (job.parameter == "speed") first.speed = job.values.front();
@@ -121,13 +121,12 @@ void run_continuation(const nlohmann::json& spec, JobContext& ctx) {
   }
   CurveStore store(ctx, family, 0, true);
   const continuation::ContinuationResult r =
-      continuation::continue_solution(family, x0, job.values, job.options, {}, [&](const CurvePoint& c) { return store(c); });
+      continuation::continue_solution(family, x0, job.values, options, {}, [&](const CurvePoint& c) { return store(c); });
   if (ctx.stop_reason() != StopReason::none) return;
   if (r.points.empty() || !r.points.front().converged) throw std::runtime_error("continuation: " + r.message);
 }
 
-void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
-  ContinuationJob job = parse_continuation_job(spec);
+void run_sweep(const ContinuationJob& job, JobContext& ctx) {
   const walker::WalkerModel<double> model = job.walker.model();
   studies::SpeedSweepOptions so;
   so.speeds = job.values;
@@ -167,14 +166,14 @@ void run_sweep(const nlohmann::json& spec, JobContext& ctx) {
   }
 }
 
-JobKind continuation_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
+JobKind continuation_kind(const std::string& task, void (*run)(const ContinuationJob&, JobContext&)) {
   std::vector<std::string> fields = walker_job_fields(true);
   fields.push_back("continuation");
-  return {task, {"walker"}, fields, [](const nlohmann::json& spec) { parse_continuation_job(spec); }, run,
-          [task](const nlohmann::json& spec) {
-            const ContinuationJob j = parse_continuation_job(spec);
-            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()), static_cast<int>(j.seed_speeds.size()));
-          }};
+  return typed_job_kind<ContinuationJob>(task, {"walker"}, fields, parse_continuation_job, run,
+                                         [task](const ContinuationJob& j) {
+                                           return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()),
+                                                                  static_cast<int>(j.seed_speeds.size()));
+                                         });
 }
 
 }  // namespace

@@ -22,8 +22,7 @@ walker::GaitProblemOptions problem_at(const WalkerJob& job, double speed) {
   return o;
 }
 
-void run_evaluate(const nlohmann::json& spec, JobContext& ctx) {
-  const WalkerJob job = parse_walker_job(spec, false);
+void run_evaluate(const WalkerJob& job, JobContext& ctx) {
   ctx.announce(1);
   ctx.add_curve(0, "gait evaluation", "speed");
   if (ctx.already_stored_points().count({0, 0})) return;
@@ -40,8 +39,7 @@ void run_evaluate(const nlohmann::json& spec, JobContext& ctx) {
   ctx.store_point(p);
 }
 
-void run_optimise(const nlohmann::json& spec, JobContext& ctx) {
-  const WalkerJob job = parse_walker_job(spec, false);
+void run_optimise(const WalkerJob& job, JobContext& ctx) {
   ctx.announce(1);
   ctx.add_curve(0, "optimal gait", "speed");
   if (ctx.already_stored_points().count({0, 0})) return;
@@ -55,8 +53,7 @@ void run_optimise(const nlohmann::json& spec, JobContext& ctx) {
   ctx.store_point(point_of(opt, {0, 0}, v));
 }
 
-void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
-  const WalkerJob job = parse_walker_job(spec, false);
+void run_multistart(const WalkerJob& job, JobContext& ctx) {
   ctx.add_curve(0, "distinct optima, best first", "rank");
   // The multistart is deterministic (seeded starts): a resumed job takes the solves an interrupted
   // attempt finished from its checkpoints, solves the rest, and stores the optima not stored yet
@@ -102,9 +99,11 @@ void run_multistart(const nlohmann::json& spec, JobContext& ctx) {
   }
 }
 
-JobKind walker_kind(const std::string& task, void (*run)(const nlohmann::json&, JobContext&)) {
-  return {task, {"walker"}, walker_job_fields(false), [](const nlohmann::json& spec) { parse_walker_job(spec, false); }, run,
-          [task](const nlohmann::json& spec) { return walker_job_cost(parse_walker_job(spec, false), task, 1, 0); }};
+JobKind walker_kind(const std::string& task, void (*run)(const WalkerJob&, JobContext&)) {
+  return typed_job_kind<WalkerJob>(
+      task, {"walker"}, walker_job_fields(false),
+      [](const nlohmann::json& spec, const CommonJobFields& common) { return parse_walker_job(spec, common, false); },
+      run, [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); });
 }
 
 }  // namespace

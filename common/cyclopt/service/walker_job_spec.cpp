@@ -2,7 +2,6 @@
 
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/service/design_bounds_spec.hpp"
-#include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
@@ -25,6 +24,10 @@ std::vector<std::string> walker_job_fields(bool sweep) {
 }
 
 WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
+  return parse_walker_job(spec, parse_common_job_fields(spec), sweep);
+}
+
+WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& common, bool sweep) {
   WalkerJob job;
   if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
   job.foot = foot_value(spec["foot"], "foot");
@@ -36,10 +39,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
                      : std::vector<double>{number_value(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)};
   job.constants.points = optional_integer(spec, "", "points", 25, 20000).value_or(job.constants.points);
   job.constants.bezier_degree = optional_integer(spec, "", "bezier_degree", 3, 10).value_or(job.constants.bezier_degree);
-  if (spec.contains("objective"))
-    job.problem.objective = enum_value(spec["objective"], "objective", known_objectives()) == "f_usq"
-                                ? walker::Objective::squared_torque
-                                : walker::Objective::mechanical;
+  job.problem.objective = common.objective.value_or(job.problem.objective);
   if (spec.contains("quadrature"))
     job.problem.quadrature = enum_value(spec["quadrature"], "quadrature", {"trapezoid", "corrected_trapezoid"}) ==
                                      "trapezoid"
@@ -76,7 +76,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
     job.seed = static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1));
     job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
   }
-  job.solver = solver_options_from_spec(spec, nlp::seed_table_6_2_options());  // the seed's SQP by default
+  job.solver = common.solver.applied_to(nlp::seed_table_6_2_options());  // the seed's SQP by default
   return job;
 }
 

@@ -20,6 +20,7 @@
 // the seed's SQP with Table 6.2 (nlp::seed_table_6_2_options()); "solver" overrides it.
 
 #include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/service/common_job_fields.hpp"
 #include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
@@ -50,8 +51,11 @@ struct WalkerJob {
 // The spec's "foot": a preset name or a foot spec object; throws SpecError naming "foot...".
 foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path);
 
-// Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed". Throws
-// SpecError naming the first invalid field and its admissible range.
+// Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed"; the
+// objective and the solver come from the parsed common fields. Throws SpecError naming the first
+// invalid field and its admissible range.
+WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& common, bool sweep);
+// The same for a whole stored spec (its common fields parsed here): for readers of stored jobs.
 WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep);
 
 // The walker fields a job kind accepts (for JobKind::fields).
