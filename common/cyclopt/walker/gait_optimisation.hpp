@@ -1,14 +1,13 @@
 #pragma once
 // One call from a walker problem to an optimal gait: start (automatic starting gait, a given x, or
-// a warm start), solve with the chosen NLP solver, and report the gait at the solution (as JSON:
-// io/gait_json.hpp).
+// a warm start), solve with the chosen NLP solver, and report the gait at the solution. (What the
+// service stores of it: service/walker_records.hpp, the result contract of records/.)
 
 #include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <optional>
-#include <string>
 
 namespace cyclopt::walker {
 
