@@ -347,7 +347,7 @@ void validate_locally(const std::string& spec_json) {
   const nlohmann::json spec = nlohmann::json::parse(spec_json);
   try {
     cyclopt::service::validate_job_spec(spec, cyclopt::service::builtin_job_kinds());
-  } catch (const cyclopt::service::SpecError& e) {
+  } catch (const cyclopt::SpecError& e) {
     std::string hint;
     if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {
       std::vector<std::string> presets;

@@ -1,7 +1,7 @@
 #include "foot_fit_commands.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/foot_fit/ankle_track.hpp"
 #include "cyclopt/foot_fit/marker_csv_file.hpp"
 #include "cyclopt/foot_fit/rolling_foot_fit.hpp"
@@ -126,7 +126,7 @@ nlohmann::json fit_json(const ff::FootFitResult& f) {
           {"trials", trials},
           {"convex", f.convexity.convex},
           {"convexity", convexity},
-          {"foot", foot::to_json(f.spec())}};
+          {"foot", io::to_json(f.spec())}};
 }
 
 void print_fit(const ff::FootFitResult& f) {
@@ -269,7 +269,7 @@ int run_fit_command(int argc, char** argv) {
       foot::validate(spec);
       std::ofstream out(save);
       if (!out) throw std::runtime_error(save + ": cannot write the file");
-      out << foot::to_json(spec).dump(2) << "\n";
+      out << io::to_json(spec).dump(2) << "\n";
       std::fprintf(stderr, "cyclopt-foot fit: wrote %s\n", save.c_str());
     }
     if (!plot_dir.empty()) {
@@ -360,7 +360,7 @@ int run_synth_command(int argc, char** argv) {
     if (!file.empty()) {
       std::ifstream in(file);
       if (!in) throw std::runtime_error("cannot read " + file);
-      spec = foot::foot_spec_from_json(nlohmann::json::parse(in));
+      spec = io::foot_spec_from_json(nlohmann::json::parse(in));
     } else {
       spec = foot::foot_preset(preset).spec;
     }
@@ -381,7 +381,7 @@ int run_synth_command(int argc, char** argv) {
       std::printf("%s: %d samples at %.1f Hz, x_off %.4f m, direction %.4f rad, noise %.2g m\n", stem.c_str(), t.samples(),
                   o.rate, o.offset, o.walking_direction, o.noise);
     }
-    std::printf("generating foot: %s\n", foot::to_json(spec).dump().c_str());
+    std::printf("generating foot: %s\n", io::to_json(spec).dump().c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cyclopt-foot synth: %s\n", e.what());
     return 2;

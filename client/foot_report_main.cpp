@@ -7,8 +7,8 @@
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/foot/foot_report.hpp"
-#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/io/foot_report.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 #include "foot_fit_commands.hpp"
 
@@ -104,6 +104,7 @@ int list_presets(const cyclopt::foot::FittedFootFilter& filter, bool filtered) {
 
 int main(int argc, char** argv) {
   using namespace cyclopt::foot;
+  using namespace cyclopt::io;
   if (argc > 1 && std::string(argv[1]) == "fit") return cyclopt::client::run_fit_command(argc, argv);
   if (argc > 1 && std::string(argv[1]) == "synth") return cyclopt::client::run_synth_command(argc, argv);
   std::string preset = "P2-shoes-left-HMT", file;
@@ -163,7 +164,7 @@ int main(int argc, char** argv) {
       validate(filter);
       return list_presets(filter, filtered);
     }
-  } catch (const SpecError& e) {
+  } catch (const cyclopt::SpecError& e) {
     return usage_error("--" + std::string(e.what()));
   } catch (const std::exception& e) {
     return usage_error(e.what());

@@ -3,8 +3,8 @@
 #include "cyclopt/cli/exit_codes.hpp"
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
-#include "cyclopt/giant_swing/seed_optimiser.hpp"
-#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/io/seed_method_json.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,7 +21,7 @@ Optimises the hip torque M_alpha(phi) of the two-segment gymnast on the high bar
 seed 000, chapter 5, and prints the result JSON (end-of-round values in degrees as in the seed's
 tables, integrals, support values, model integrations, wall time).
 
-  --task FILE     a JSON task spec (fields: common/cyclopt/giant_swing/task_spec.hpp)
+  --task FILE     a JSON task spec (fields: common/cyclopt/io/task_spec_json.hpp)
   --preset KIND   single_swing, periodic_sequence, accelerating or decelerating with the
                   seed's settings
   --print-spec    print the validated spec (with defaults filled in) and exit
@@ -42,6 +42,7 @@ int invalid_input(const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace cyclopt::giant_swing;
+  using namespace cyclopt::io;
   std::string task_file, preset;
   bool print_spec = false;
   for (int i = 1; i < argc; ++i) {
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
   TaskSpec spec;
   try {
     spec = task_spec_from_json(j);
-  } catch (const TaskSpecError& e) {
+  } catch (const cyclopt::SpecError& e) {
     return invalid_input(std::string("invalid task spec: ") + e.what());
   }
   if (print_spec) {

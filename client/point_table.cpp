@@ -1,5 +1,9 @@
 #include "point_table.hpp"
 
+#include "cyclopt/records/gait_records.hpp"
+
+#include <cmath>
+
 namespace cyclopt::client {
 namespace {
 
@@ -7,28 +11,32 @@ nlohmann::json member(const nlohmann::json& object, const char* key) {
   return object.is_object() && object.contains(key) ? object[key] : nlohmann::json();
 }
 
+nlohmann::ordered_json number(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); }
+
 }  // namespace
 
 std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   const nlohmann::json values = member(row, "values");
-  const nlohmann::json gait = member(values, "gait");
-  if (!gait.is_object()) return std::nullopt;
+  const nlohmann::json gait_json = member(values, "gait");
+  if (!gait_json.is_object()) return std::nullopt;
+  records::GaitRecord gait;
+  try {
+    gait = gait_json.get<records::GaitRecord>();
+  } catch (const records::RecordError&) {
+    return std::nullopt;  // not the contract's gait: shown column by column (row_table.hpp)
+  }
   nlohmann::ordered_json s;
   s["curve"] = member(row, "curve");
   s["point"] = member(row, "point");
   s["speed_m_s"] = member(row, "parameter");
-  const nlohmann::json f_mech = member(gait, "f_mech");
-  s["f_mech"] = f_mech;  // eq. 5.102
-  const nlohmann::json objective = member(gait, "objective");
-  if (objective != f_mech) s["objective"] = objective;  // f_usq jobs (eq. 5.101)
-  s["step_length_m"] = member(gait, "step_length");
-  const nlohmann::json period = member(gait, "step_period");
-  s["period_s"] = period;
+  s["f_mech"] = number(gait.f_mech);  // eq. 5.102
+  if (gait.real && gait.objective != gait.f_mech) s["objective"] = number(gait.objective);  // f_usq jobs (eq. 5.101)
+  s["step_length_m"] = number(gait.step_length);
+  s["period_s"] = number(gait.step_period);
   // steps per minute: one step per period
-  s["cadence_1_min"] = period.is_number() && period.get<double>() > 0 ? nlohmann::json(60.0 / period.get<double>())
-                                                                      : nlohmann::json();
-  s["floquet"] = member(gait, "floquet_multiplier");  // eq. 5.89, stable for |Lambda| < 1
-  s["impact_loss_J"] = member(gait, "impact_energy_loss");
+  s["cadence_1_min"] = gait.step_period > 0 ? number(60.0 / gait.step_period) : nlohmann::ordered_json();
+  s["floquet"] = number(gait.floquet_multiplier);  // eq. 5.89, stable for |Lambda| < 1
+  s["impact_loss_J"] = number(gait.impact_energy_loss);
   s["status"] = member(row, "status");
   return s;
 }

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
       service::ValidatedJobSpec spec;
       try {
         spec = service::validate_job_spec_text(unit.spec_json, kinds);
-      } catch (const service::SpecError& e) {
+      } catch (const SpecError& e) {
         throw std::runtime_error("spec_json: the job spec is not valid in this cyclopt-worker (" + std::string(e.what()) +
                                  ")");
       }

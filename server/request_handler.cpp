@@ -137,7 +137,7 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     ++(out.duplicate ? counters_.duplicates : counters_.accepted);
     accept(msg.request_id, out.job_id, out.duplicate, std::string(storage::to_string(out.state)), key);
     if (!out.duplicate) pool_.wake();
-  } catch (const service::SpecError& e) {
+  } catch (const SpecError& e) {
     reject(msg.request_id, e.field(), e.what(), key);
   } catch (const std::exception& e) {
     reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);

@@ -20,7 +20,7 @@ std::shared_ptr<const service::ValidatedJobSpec> parse_stored_spec(const storage
                                                                    std::string& error) {
   try {
     return std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(job.spec_json, kinds));
-  } catch (const service::SpecError& e) {
+  } catch (const SpecError& e) {
     error = "spec_json: the stored spec of job " + std::to_string(job.id) + " is not valid on this server (" + e.what() +
             ")";
   } catch (const std::exception& e) {

@@ -1,8 +1,10 @@
 // Figures of a foot_comparison job (plot/foot_comparison_figures.hpp) from a job document in the
-// layout foot_comparison_kind.hpp stores: every foot's curve, the reference dashed black, the
+// layout foot_comparison_kind.hpp stores (its records, records/foot_comparison_records.hpp): every foot's curve, the reference dashed black, the
 // envelope, outlines of the rolling feet only; SVG and PNG are written.
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/records/foot_comparison_records.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,18 +18,31 @@ nlohmann::json row(int curve, int point, double parameter, nlohmann::json values
   return {{"curve", curve}, {"point", point}, {"parameter", parameter}, {"status", "ok"}, {"values", std::move(values)}};
 }
 
+// A foot's point at one speed.
+nlohmann::json speed_values(const std::string& foot, double f_mech) {
+  records::ComparedSpeedRecord r;
+  r.foot = foot;
+  r.f_mech = f_mech;
+  return r;
+}
+
 nlohmann::json comparison_document() {
   const std::vector<std::string> feet = {"point", "P2-shoes-left-HMT-SG", "P1-shoes-left-HM-SG"};
   const double f[3][2] = {{0.04, 0.05}, {0.015, 0.02}, {0.016, 0.018}};
   nlohmann::json solutions = nlohmann::json::array();
   for (int k = 0; k < 3; ++k) {
-    for (int i = 0; i < 2; ++i) solutions.push_back(row(1 + k, i, 1.0 + 0.5 * i, {{"foot", feet[k]}, {"f_mech", f[k][i]}}));
-    solutions.push_back(row(4, k, 1 + k, {{"foot", feet[k]}, {"foot_spec", foot::to_json(foot::foot_preset(feet[k]).spec)},
-                                          {"reference", k == 0}, {"best_fitted", k == 2}, {"saving", k == 0 ? 0.0 : 0.6},
-                                          {"envelope_saving", 0.62}}));
+    for (int i = 0; i < 2; ++i) solutions.push_back(row(1 + k, i, 1.0 + 0.5 * i, speed_values(feet[k], f[k][i])));
+    records::ComparedFootRecord summary;
+    summary.foot = feet[k];
+    summary.foot_spec = io::to_json(foot::foot_preset(feet[k]).spec);
+    summary.reference = k == 0;
+    summary.best_fitted = k == 2;
+    summary.saving = k == 0 ? 0.0 : 0.6;
+    if (k == 0) summary.envelope_saving = 0.62;
+    solutions.push_back(row(4, k, 1 + k, summary));
   }
-  solutions.push_back(row(0, 0, 1.0, {{"foot", feet[1]}, {"f_mech", 0.015}}));
-  solutions.push_back(row(0, 1, 1.5, {{"foot", feet[2]}, {"f_mech", 0.018}}));
+  solutions.push_back(row(0, 0, 1.0, speed_values(feet[1], 0.015)));
+  solutions.push_back(row(0, 1, 1.5, speed_values(feet[2], 0.018)));
   return {{"id", 7}, {"scene", "walker"}, {"task", "foot_comparison"}, {"solutions", solutions}};
 }
 

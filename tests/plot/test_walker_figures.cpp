@@ -4,16 +4,16 @@
 // `cyclopt report` work on a results database written through the store API.
 // The gaits are automatic starting gaits (walker::starting_gait), real but not optimal: cheap.
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
+#include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
-#include "cyclopt/walker/gait_optimisation.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 #include "png_inspection.hpp"
 
@@ -79,7 +79,7 @@ struct StoredJob {
   std::vector<storage::SolutionPoint> points;
 };
 
-// Starting gaits of a foot at the speeds, as the sweep job kind would store them.
+// Starting gaits of a foot at the speeds, stored by the walker kinds' writer (service/walker_points.hpp).
 StoredJob starting_gaits(const std::string& foot, const std::vector<double>& speeds, const std::string& name) {
   StoredJob job;
   job.spec = {{"scene", "walker"}, {"task", "sweep"}, {"foot", foot}, {"speeds", speeds}, {"name", name}};
@@ -89,15 +89,7 @@ StoredJob starting_gaits(const std::string& foot, const std::vector<double>& spe
     so.speed = speeds[i];
     const walker::StartingGait sg = walker::starting_gait(ev, so);
     EXPECT_TRUE(sg.real) << foot << " at " << speeds[i] << " m/s: " << sg.message;
-    storage::SolutionPoint p;
-    p.key = {0, static_cast<int>(i)};
-    p.parameter = speeds[i];
-    nlohmann::json g = walker::gait_to_json(sg.gait, true);
-    p.trajectory = g["trajectory"];
-    g.erase("trajectory");
-    p.values["gait"] = g;
-    p.status = "ok";
-    job.points.push_back(std::move(p));
+    job.points.push_back(service::point_of(sg.gait, {sg.x, "starting gait"}, {0, static_cast<int>(i)}, speeds[i]));
   }
   return job;
 }
@@ -138,11 +130,11 @@ TEST_F(WalkerFigures, PoseHasTheModelsSegmentLengthsAndTheFootRollsOnTheGround) 
   const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
   const walker::WalkerModel<double> m = r.job.model();
   const std::vector<Xz> outline = foot_outline(r.job.foot);
-  const nlohmann::json& q = r.points[0].trajectory["q"];
+  const std::vector<std::vector<double>>& q = r.points[0].trajectory->q;
   auto dist = [](const Xz& a, const Xz& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); };
   for (std::size_t i = 0; i < q[0].size(); i += 40) {
     walker::CoordinateVector<double> qi(static_cast<Eigen::Index>(q.size()));
-    for (std::size_t k = 0; k < q.size(); ++k) qi(static_cast<Eigen::Index>(k)) = q[k][i].get<double>();
+    for (std::size_t k = 0; k < q.size(); ++k) qi(static_cast<Eigen::Index>(k)) = q[k][i];
     const WalkerPose p = walker_pose(m, qi, outline);
     EXPECT_NEAR(dist(p.hip, p.knee1), m.segments[walker::l_O], 1e-12);
     EXPECT_NEAR(dist(p.knee1, p.ankle1), m.segments[walker::l_U], 1e-12);
@@ -159,7 +151,7 @@ TEST_F(WalkerFigures, PoseHasTheModelsSegmentLengthsAndTheFootRollsOnTheGround) 
     EXPECT_NEAR(c1[1], 0.0, 2e-4);
     EXPECT_NEAR(c1[0], p.contact[0], 0.01);
     EXPECT_NEAR(c2[1], p.swing_lowest[1], 2e-4);
-    EXPECT_NEAR(p.hip[0], r.points[0].trajectory["hip"][0][i].get<double>(), 1e-12);
+    EXPECT_NEAR(p.hip[0], r.points[0].trajectory->hip[0][i], 1e-12);
   }
 }
 
@@ -260,7 +252,7 @@ TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) 
 
 TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   nlohmann::json result;
-  result["task"] = giant_swing::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
+  result["task"] = io::to_json(giant_swing::default_task(giant_swing::TaskKind::single_swing));
   result["support_values_Nm"] = {0.0, 60.0, -40.0, 0.0};
   const Scene s = giant_swing_stroboscope(giant_swing::appendix_b_gymnast(), result, 25.0);
   ASSERT_GT(s.shapes.size(), 20u);  // at least 10 frames of two segments, plus two paths

@@ -4,6 +4,7 @@
 // (P2 start, default bounds, foot and density free) is accepted with the start foot moved onto the
 // bounds.
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 // The seed's section 10.2 problem at one speed: P2 with a density, HM-relevant parameters free.
 nlohmann::json design_spec() {
-  nlohmann::json foot = foot::to_json(foot::foot_preset("P2-shoes-left-HMT").spec);
+  nlohmann::json foot = io::to_json(foot::foot_preset("P2-shoes-left-HMT").spec);
   foot["density"] = 10.0;
   return {{"scene", "walker"},
           {"task", "optimise"},
@@ -93,7 +94,7 @@ TEST(DesignSpecs, BoundsThatExcludeTheStartFootAreRejectedWithTheAdmissibleRange
 
 TEST(DesignSpecs, FreeParametersTheModelLacksOrThatFollowTheGeometryAreRejected) {
   nlohmann::json s = design_spec();
-  s["foot"] = foot::to_json(foot::foot_preset("P1-barefoot-left-HM").spec);
+  s["foot"] = io::to_json(foot::foot_preset("P1-barefoot-left-HM").spec);
   s["foot"]["density"] = 20.0;
   s["free_parameters"] = {"h_F", "l_MT"};  // HM has no toe
   std::string r = rejection(s);

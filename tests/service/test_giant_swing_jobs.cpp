@@ -19,7 +19,7 @@ TEST(GiantSwingJobSpec, RejectsBadFieldsNamingThem) {
   auto error_of = [&](const nlohmann::json& spec) -> std::pair<std::string, std::string> {
     try {
       service::validate_job_spec(spec, kinds);
-    } catch (const service::SpecError& e) {
+    } catch (const SpecError& e) {
       return {e.field(), e.what()};
     }
     return {"", ""};

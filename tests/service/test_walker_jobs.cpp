@@ -26,7 +26,7 @@ std::string rejection(const nlohmann::json& spec) {
   static const service::JobKindRegistry kinds = service::builtin_job_kinds();
   try {
     service::validate_job_spec(spec, kinds);
-  } catch (const service::SpecError& e) {
+  } catch (const SpecError& e) {
     return e.field() + ": " + e.what();
   }
   return "accepted";

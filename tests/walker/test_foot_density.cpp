@@ -8,6 +8,7 @@
 #include "reference_gaits.hpp"
 
 #include "cyclopt/foot/mass_properties.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <gtest/gtest.h>
@@ -148,7 +149,7 @@ TEST(FootDensity, DegenerateLimitsGiveFiniteValuesAndDerivatives) {
     for (int i = 0; i < nf; ++i) fp(i) = D::variable(spec.parameters(i), i);
     const auto mp = foot::mass_properties(foot::make_profile<D>(spec.model, fp), D::variable(*spec.density, nf));
     for (const D& v : {mp.area, mp.mass, mp.com_distance, mp.inertia_com, mp.theta_F0})
-      EXPECT_TRUE(ad::isfinite(v)) << foot::to_json(spec).dump() << ": " << v;
+      EXPECT_TRUE(ad::isfinite(v)) << io::to_json(spec).dump() << ": " << v;
     const auto& ref = testing::reference_gait(spec.model == foot::FootModel::hm ? "P1-barefoot-left-HM" : "P2-shoes-left-HMT");
     const WalkerModel<double> model = make_walker_model(spec);
     GaitProblemOptions o{Objective::mechanical, 1.3, Quadrature::trapezoid, {"density"}};
@@ -160,12 +161,12 @@ TEST(FootDensity, DegenerateLimitsGiveFiniteValuesAndDerivatives) {
       ++real;
       EXPECT_TRUE(std::isfinite(e.objective) && e.equalities.allFinite() && e.inequalities.allFinite() &&
                   e.gradient.allFinite() && e.equality_jacobian.allFinite() && e.inequality_jacobian.allFinite())
-          << foot::to_json(spec).dump();
+          << io::to_json(spec).dump();
     } else {
       ++flagged;
       EXPECT_FALSE(st.reason.empty());
     }
-    std::printf("%s: m_F %.3g kg, NLP evaluation %s\n", foot::to_json(spec).dump().c_str(), ad::value(mp.mass),
+    std::printf("%s: m_F %.3g kg, NLP evaluation %s\n", io::to_json(spec).dump().c_str(), ad::value(mp.mass),
                 st.ok ? "ok, values and derivatives finite" : st.reason.c_str());
   }
   EXPECT_GT(real, 0);
@@ -270,7 +271,7 @@ Agreement agreement_on_random_feet(unsigned seed, double k_min, int wanted) {
         const double err = std::abs(J(r, col) - cs) / std::abs(cs);
         if (err > a.worst) {
           a.worst = err;
-          a.worst_at = foot::to_json(spec).dump() + ", output " + std::to_string(r) + " w.r.t. " +
+          a.worst_at = io::to_json(spec).dump() + ", output " + std::to_string(r) + " w.r.t. " +
                        model_parameter_names(m)[static_cast<std::size_t>(directions[k])] + ": AD " +
                        std::to_string(J(r, col)) + ", complex step " + std::to_string(cs);
         }

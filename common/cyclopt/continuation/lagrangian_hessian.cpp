@@ -1,6 +1,6 @@
 #include "cyclopt/continuation/lagrangian_hessian.hpp"
 
-#include "cyclopt/nlp/kkt_measures.hpp"
+#include "cyclopt/nlp/sqp_building_blocks.hpp"
 
 #include <cmath>
 

@@ -1,11 +1,7 @@
 #include "cyclopt/continuation/qp_predictor.hpp"
 
 #include "cyclopt/continuation/lagrangian_hessian.hpp"
-#include "cyclopt/nlp/active_set_projections.hpp"
-#include "cyclopt/nlp/damped_bfgs.hpp"
-#include "cyclopt/nlp/kkt_measures.hpp"
-#include "cyclopt/nlp/l1_merit.hpp"
-#include "cyclopt/nlp/sqp_subproblems.hpp"
+#include "cyclopt/nlp/sqp_building_blocks.hpp"
 #include "cyclopt/qp/convex_solve.hpp"
 
 #include <algorithm>

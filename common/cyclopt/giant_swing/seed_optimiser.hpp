@@ -39,11 +39,4 @@ struct SeedMethodResult {
 
 SeedMethodResult optimise_seed_method(const Model& model, const TaskSpec& spec);
 
-// One round as JSON in the units of the seed's tables (phi'/omega, deg, deg/s, J, rad^2/s^5, Nm^2 s).
-nlohmann::json to_json(const RoundResult& round, double omega);
-
-// Result as JSON: the end-of-round values in the units of the seed's tables (deg, deg/s), the
-// integrals, the support values, counts and times.
-nlohmann::json to_json(const SeedMethodResult& result, const TaskSpec& spec);
-
 }  // namespace cyclopt::giant_swing

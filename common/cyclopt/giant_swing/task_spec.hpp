@@ -1,5 +1,5 @@
 #pragma once
-// The four motion tasks of seed 000, chapter 5, as plain structs with strict JSON in/out.
+// The four motion tasks of seed 000, chapter 5, as plain structs:
 //
 //   single_swing       (5.1): start in the handstand at omega, return to phi'/omega = 1, alpha = 0,
 //                             alpha' = 0 at phi = 2 pi; one round evaluated (eq. 4.10).
@@ -7,20 +7,14 @@
 //   accelerating       (5.3): start at omega/2, reach omega after one swing.
 //   decelerating       (5.4): start at 2 omega, reach omega after one swing.
 //
-// JSON (angles in degrees as in the seed's tables, torques in Nm), e.g.
-//   {"task": "single_swing", "omega_deg_s": 40, "weights": {"jerk": 0.01},
-//    "alpha_ddot_max_deg_s2": 10000,
-//    "optimiser": {"support_points": 4, "max_support_points": 16, "initial_step": 20}}
-// Every field but "task" is optional (defaults below); unknown keys and out-of-range values are
-// errors naming the field (as a JSON path such as "task.weights.jerk") and its admissible range.
+// Their JSON form (what users write), with the admissible range of every field, is read and
+// written in io/task_spec_json.hpp.
 
 #include "cyclopt/giant_swing/evaluation.hpp"
 
 #include <Eigen/Core>
-#include <nlohmann/json_fwd.hpp>
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 namespace cyclopt::giant_swing {
@@ -58,18 +52,6 @@ struct TaskSpec {
 
 // The chapter-5 task with the seed's settings (start rate, rounds; weights 100/10/1, no jerk).
 TaskSpec default_task(TaskKind kind);
-
-class TaskSpecError : public std::invalid_argument {
- public:
-  TaskSpecError(std::string field, const std::string& message);
-  const std::string& field() const { return field_; }
-
- private:
-  std::string field_;
-};
-
-TaskSpec task_spec_from_json(const nlohmann::json& j, const std::string& path = "task");
-nlohmann::json to_json(const TaskSpec& spec);
 
 // The start state (handstand, phi = alpha = alpha' = 0) and the simulation settings of a task.
 State<double> initial_state(const TaskSpec& spec);

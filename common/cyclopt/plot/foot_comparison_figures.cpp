@@ -1,7 +1,9 @@
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 
 #include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/records/foot_comparison_records.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +13,6 @@
 
 namespace cyclopt::plot {
 namespace {
-
-double number_or_nan(const nlohmann::json& values, const char* key) {
-  return values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
-}
 
 std::string percent(double saving) {
   if (!std::isfinite(saving)) return "saving ?";
@@ -34,26 +32,25 @@ FootComparisonCurves foot_comparison_curves(const nlohmann::json& doc) {
   // The summary curve: one point per foot whose values hold the foot's spec; its parameter is the
   // foot's own curve index.
   std::map<int, std::size_t> foot_of_curve;
-  std::map<int, nlohmann::json> by_curve_point;
   for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
-    const nlohmann::json& v = s.at("values");
-    if (!v.contains("foot_spec")) continue;
+    if (!records::is_compared_foot(s.at("values"))) continue;
+    const auto v = s["values"].get<records::ComparedFootRecord>();
     ComparedFootCurve f;
-    f.name = v.value("foot", std::string("?"));
-    f.spec = foot::foot_spec_from_json(v["foot_spec"], "foot_spec");
-    f.reference = v.value("reference", false);
-    f.best_fitted = v.value("best_fitted", false);
-    f.saving = number_or_nan(v, "saving");
-    if (f.reference) c.envelope_saving = number_or_nan(v, "envelope_saving");
+    f.name = v.foot;
+    f.spec = io::foot_spec_from_json(v.foot_spec, "foot_spec");
+    f.reference = v.reference;
+    f.best_fitted = v.best_fitted;
+    f.saving = v.saving;
+    if (f.reference) c.envelope_saving = v.envelope_saving.value_or(std::nan(""));
     foot_of_curve[static_cast<int>(s.at("parameter").get<double>())] = c.feet.size();
     c.feet.push_back(std::move(f));
   }
   if (c.feet.empty())
     throw std::invalid_argument("job " + std::to_string(c.id) + " has no foot summary yet (is it finished?)");
   for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
-    const nlohmann::json& v = s.at("values");
-    const double f_mech = number_or_nan(v, "f_mech");
-    if (v.contains("foot_spec") || !std::isfinite(f_mech) || !s.at("parameter").is_number()) continue;
+    if (records::is_compared_foot(s.at("values"))) continue;
+    const double f_mech = s["values"].get<records::ComparedSpeedRecord>().f_mech;
+    if (!std::isfinite(f_mech) || !s.at("parameter").is_number()) continue;
     const int curve = s.value("curve", -1);
     const double speed = s["parameter"].get<double>();
     if (curve == 0) {

@@ -13,17 +13,15 @@ namespace {
 constexpr Color kLegA{0.12, 0.47, 0.71, 1}, kLegB{0.84, 0.37, 0.0, 1}, kTorso{0.25, 0.25, 0.25, 1};
 constexpr Color kContact{0.84, 0.15, 0.16, 1}, kClearance{0.17, 0.63, 0.17, 1};
 
-std::vector<double> row(const nlohmann::json& rows, std::size_t i) { return rows.at(i).get<std::vector<double>>(); }
-
 // q_s at time t by linear interpolation of the stored grid (time is increasing).
-walker::CoordinateVector<double> q_at(const nlohmann::json& tr, const std::vector<double>& time, double t) {
+walker::CoordinateVector<double> q_at(const records::GaitTrajectoryRecord& tr, double t) {
+  const std::vector<double>& time = tr.time;
   const auto hi = std::upper_bound(time.begin(), time.end(), t);
   const std::size_t j = std::clamp<std::size_t>(static_cast<std::size_t>(hi - time.begin()), 1, time.size() - 1);
   const double w = std::clamp((t - time[j - 1]) / (time[j] - time[j - 1]), 0.0, 1.0);
-  const nlohmann::json& q = tr.at("q");
+  const std::vector<std::vector<double>>& q = tr.q;
   walker::CoordinateVector<double> out(static_cast<Eigen::Index>(q.size()));
-  for (std::size_t r = 0; r < q.size(); ++r)
-    out(static_cast<Eigen::Index>(r)) = (1 - w) * q[r][j - 1].get<double>() + w * q[r][j].get<double>();
+  for (std::size_t r = 0; r < q.size(); ++r) out(static_cast<Eigen::Index>(r)) = (1 - w) * q[r].at(j - 1) + w * q[r].at(j);
   return out;
 }
 
@@ -45,17 +43,21 @@ std::string fixed(double v, int digits) {
 }  // namespace
 
 Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, const StroboscopeOptions& o) {
-  if (point.trajectory.is_null()) throw std::invalid_argument("gait stroboscope: the point has no stored trajectory");
+  if (!point.trajectory) throw std::invalid_argument("gait stroboscope: the point has no stored trajectory");
   const walker::WalkerModel<double> model = job.job.model();
   const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.job.foot) : std::vector<Xz>{};
-  const nlohmann::json& tr = point.trajectory;
-  const std::vector<double> time = tr.at("time").get<std::vector<double>>();
-  const double period = time.back(), step = point.gait.at("step_length").get<double>();
-  const std::vector<double> swing_x = row(tr.at("swing_contact"), 0), swing_z = row(tr.at("swing_contact"), 1);
+  const records::GaitTrajectoryRecord& tr = *point.trajectory;
+  if (tr.time.size() < 2 || tr.swing_contact.size() != 2)
+    throw std::invalid_argument("gait stroboscope: the stored trajectory has " + std::to_string(tr.time.size()) +
+                                " samples and " + std::to_string(tr.swing_contact.size()) +
+                                " swing-contact rows (needs >= 2 and 2)");
+  const double period = tr.time.back(), step = point.gait.step_length;
+  const std::vector<double>& swing_x = tr.swing_contact[0];
+  const std::vector<double>& swing_z = tr.swing_contact[1];
 
   Scene scene;
   const double dt = period / o.frames_per_step;
-  scene.axes = {std::to_string(o.steps) + " steps at v = " + fixed(point.gait.value("mean_speed", point.speed), 2) +
+  scene.axes = {std::to_string(o.steps) + " steps at v = " + fixed(point.gait.mean_speed, 2) +
                     " m/s, every " + fixed(dt * 1000, 0) + " ms (seed 001 Fig. 9.2)",
                 "x (m)", "z (m)", false};
   scene.ground_z = 0.0;
@@ -67,7 +69,7 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
     // Leg "A" is the stance leg of even steps; the legs swap roles at every impact.
     const Color stance = k % 2 == 0 ? kLegA : kLegB, swing = k % 2 == 0 ? kLegB : kLegA;
     for (int f = k == 0 ? 0 : 1; f <= o.frames_per_step; ++f) {
-      const WalkerPose p = walker_pose(model, q_at(tr, time, f * dt), outline);
+      const WalkerPose p = walker_pose(model, q_at(tr, f * dt), outline);
       const double fade = 0.35 + 0.65 * (k * o.frames_per_step + f) / double(o.steps * o.frames_per_step);
       auto faded = [fade](Color c) { return Color{c.r, c.g, c.b, fade}; };
       // Legends on the last, fully opaque frame (the legend takes the first labelled shape's colour).

@@ -2,7 +2,7 @@
 
 #include "cyclopt/giant_swing/hip_torque_law.hpp"
 #include "cyclopt/giant_swing/swing_simulation.hpp"
-#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +19,7 @@ Scene giant_swing_stroboscope(const giant_swing::Model& model, const nlohmann::j
   using namespace giant_swing;
   if (!result.contains("task") || !result.contains("support_values_Nm"))
     throw std::invalid_argument("giant swing result: needs \"task\" and \"support_values_Nm\" (cyclopt-giant-swing output)");
-  const TaskSpec spec = task_spec_from_json(result["task"]);
+  const TaskSpec spec = io::task_spec_from_json(result["task"]);
   const std::vector<double> z = result["support_values_Nm"].get<std::vector<double>>();
   const HipTorqueProfile profile{Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()))};
   // Accepted steps of the simulation, sampled at rate_hz by linear interpolation.

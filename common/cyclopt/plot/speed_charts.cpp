@@ -43,7 +43,7 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
         omitted.push_back(p.status);
         continue;
       }
-      s.x.push_back(p.gait.value("mean_speed", p.speed));
+      s.x.push_back(p.gait.mean_speed);
       s.y.push_back(value(p));
     }
     s.label = with_omitted(s.label, omitted);
@@ -70,10 +70,10 @@ const char* joint_name(int j) {
 }
 
 double max_abs_torque(const GaitPoint& p, int joint) {
-  const nlohmann::json& rows = p.trajectory.at("torque");
+  const std::vector<std::vector<double>>& rows = p.trajectory->torque;
   if (joint >= static_cast<int>(rows.size())) return std::nan("");
   double m = 0;
-  for (const nlohmann::json& u : rows[joint]) m = std::max(m, std::abs(u.get<double>()));
+  for (double u : rows[static_cast<std::size_t>(joint)]) m = std::max(m, std::abs(u));
   return m;
 }
 
@@ -83,7 +83,7 @@ LineChart cost_of_transport_chart(const std::vector<WalkerJobResults>& jobs) {
   LineChart chart = per_job_chart(jobs,
                                   {"Cost of transport of the optimal gaits (seed 001 Fig. 9.19a)", "mean speed v (m/s)",
                                    "mechanical cost of transport f_mech (eq. 5.102) (-)", true},
-                                  [](const GaitPoint& p) { return p.gait.at("f_mech").get<double>(); });
+                                  [](const GaitPoint& p) { return p.gait.f_mech; });
   start_at_zero(chart);
   return chart;
 }
@@ -99,8 +99,8 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
       Series s{std::string(joint_name(j)) + (jobs.size() > 1 ? ", " + jobs[k].label : ""), {}, {}, true, k > 0,
                palette(j)};
       for (const GaitPoint& p : jobs[k].points)
-        if (p.converged && p.trajectory.contains("torque")) {
-          s.x.push_back(p.gait.value("mean_speed", p.speed));
+        if (p.converged && p.trajectory) {
+          s.x.push_back(p.gait.mean_speed);
           s.y.push_back(max_abs_torque(p, j));
         } else if (j == 0) {
           omitted.push_back(p.converged ? "without torques" : p.status);
@@ -118,14 +118,14 @@ LineChart step_length_chart(const std::vector<WalkerJobResults>& jobs) {
   return per_job_chart(jobs,
                        {"Step length of the optimal gaits (seed 001 Fig. 9.6a)", "mean speed v (m/s)",
                         "step length x_H- - x_H+ (m)", true},
-                       [](const GaitPoint& p) { return p.gait.at("step_length").get<double>(); });
+                       [](const GaitPoint& p) { return p.gait.step_length; });
 }
 
 LineChart floquet_chart(const std::vector<WalkerJobResults>& jobs) {
   return per_job_chart(jobs,
                        {"Floquet multiplier of the optimal gaits (seed 001 Fig. 9.6b; stable for |Lambda| < 1)",
                         "mean speed v (m/s)", "Floquet multiplier Lambda (eq. 5.89) (-)", true},
-                       [](const GaitPoint& p) { return p.gait.at("floquet_multiplier").get<double>(); });
+                       [](const GaitPoint& p) { return p.gait.floquet_multiplier; });
 }
 
 }  // namespace cyclopt::plot

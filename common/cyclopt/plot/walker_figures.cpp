@@ -17,7 +17,7 @@ namespace {
 double middle_speed(const WalkerJobResults& job) {
   std::vector<double> v;
   for (const GaitPoint& p : job.points)
-    if (p.converged && !p.trajectory.is_null()) v.push_back(p.speed);
+    if (p.converged && p.trajectory) v.push_back(p.speed);
   return v.empty() ? std::nan("") : v[v.size() / 2];
 }
 

@@ -8,11 +8,15 @@
 namespace cyclopt::plot {
 namespace {
 
-std::string number(const nlohmann::json& v, const char* format) {
-  if (!v.is_number()) return "-";
+std::string number(double v, const char* format) {
+  if (!std::isfinite(v)) return "-";
   char b[48];
-  std::snprintf(b, sizeof b, format, v.get<double>());
+  std::snprintf(b, sizeof b, format, v);
   return b;
+}
+
+std::string number(const nlohmann::json& v, const char* format) {
+  return number(v.is_number() ? v.get<double>() : std::nan(""), format);
 }
 
 ReportTable result_table(const WalkerJobResults& r) {
@@ -21,13 +25,12 @@ ReportTable result_table(const WalkerJobResults& r) {
               "mean speed (m/s)", "step length (m)", "step period (s)", "Floquet Lambda", "stable",
               "impact loss (J)", "max inequality"};
   for (const GaitPoint& p : r.points) {
-    const nlohmann::json& g = p.gait;
-    auto at = [&](const char* k) { return g.contains(k) ? g[k] : nlohmann::json(); };
-    t.rows.push_back({number(p.speed, "%.3f"), p.status, p.converged ? "yes" : "no", number(at("f_mech"), "%.5f"),
-                      number(at("f_usq"), "%.5f"), number(at("mean_speed"), "%.4f"), number(at("step_length"), "%.4f"),
-                      number(at("step_period"), "%.4f"), number(at("floquet_multiplier"), "%.4f"),
-                      g.contains("stable") ? (g["stable"].get<bool>() ? "yes" : "no") : "-",
-                      number(at("impact_energy_loss"), "%.3f"), number(at("max_inequality"), "%.2e")});
+    const records::GaitRecord& g = p.gait;
+    t.rows.push_back({number(p.speed, "%.3f"), p.status, p.converged ? "yes" : "no", number(g.f_mech, "%.5f"),
+                      number(g.f_usq, "%.5f"), number(g.mean_speed, "%.4f"), number(g.step_length, "%.4f"),
+                      number(g.step_period, "%.4f"), number(g.floquet_multiplier, "%.4f"),
+                      g.real ? (g.stable ? "yes" : "no") : "-", number(g.impact_energy_loss, "%.3f"),
+                      number(g.max_inequality, "%.2e")});
   }
   return t;
 }

@@ -1,5 +1,7 @@
 #include "cyclopt/plot/walker_job_results.hpp"
 
+#include "cyclopt/records/walker_point_record.hpp"
+
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -18,20 +20,20 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   const std::string foot = r.job.foot.name.empty() ? std::string(foot::to_string(r.job.foot.model)) : r.job.foot.name;
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
-  std::map<std::pair<int, int>, nlohmann::json> trajectories;
-  for (const nlohmann::json& t : doc.value("trajectories", nlohmann::json::array()))
-    if (t.value("format", "") == "json") trajectories[{t.value("curve", 0), t.value("point", 0)}] = t["data"];
+  std::map<std::pair<int, int>, const nlohmann::json*> trajectories;  // into doc
+  const nlohmann::json none = nlohmann::json::array();
+  for (const nlohmann::json& t : doc.contains("trajectories") ? doc["trajectories"] : none)
+    if (t.value("format", "") == "json") trajectories[{t.value("curve", 0), t.value("point", 0)}] = &t.at("data");
   for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
     if (s.value("curve", 0) != 0) continue;
     GaitPoint p;
     p.speed = s.at("parameter").is_number() ? s["parameter"].get<double>() : std::nan("");
     p.status = s.value("status", "");
-    const nlohmann::json& values = s.at("values");
-    p.gait = values.value("gait", nlohmann::json::object());
-    const bool solved = !values.contains("solver") || values["solver"].value("success", false);
-    p.converged = p.gait.value("real", false) && solved;
+    const auto values = s.at("values").get<records::WalkerPointRecord>();
+    if (values.gait) p.gait = *values.gait;
+    p.converged = records::solved(values);
     const auto t = trajectories.find({0, s.value("point", 0)});
-    if (t != trajectories.end()) p.trajectory = t->second;
+    if (t != trajectories.end()) p.trajectory = t->second->get<records::GaitTrajectoryRecord>();
     r.points.push_back(std::move(p));
   }
   return r;
@@ -40,7 +42,7 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
 const GaitPoint* point_near(const WalkerJobResults& r, double speed) {
   const GaitPoint* best = nullptr;
   for (const GaitPoint& p : r.points) {
-    if (!p.converged || p.trajectory.is_null()) continue;
+    if (!p.converged || !p.trajectory) continue;
     if (!best || (std::isfinite(speed) && std::abs(p.speed - speed) < std::abs(best->speed - speed))) best = &p;
   }
   return best;

@@ -1,13 +1,16 @@
 #pragma once
 // The solved points of one walker job as the figures need them, read from a job document: the
 // JSON `cyclopt export` writes (job row with spec, events, curves, solutions, trajectories),
-// whether it came from the server, a database file or an exported file.
+// whether it came from the server, a database file or an exported file. Values and trajectories
+// are read through the result contract (records/), so the figures see typed fields only.
 
+#include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,8 +20,8 @@ struct GaitPoint {
   double speed = 0;              // requested mean speed (the point's parameter), m/s
   std::string status;            // solver termination or "ok" / "no real solution"
   bool converged = false;        // a real gait and, if optimised, a successful solve
-  nlohmann::json gait;           // values.gait (gait_to_json without the trajectory)
-  nlohmann::json trajectory;     // null when none was stored
+  records::GaitRecord gait;      // values.gait (not real when the point has none)
+  std::optional<records::GaitTrajectoryRecord> trajectory;  // none when none was stored
 };
 
 struct WalkerJobResults {
@@ -29,7 +32,8 @@ struct WalkerJobResults {
   std::vector<GaitPoint> points;  // curve 0, in point order
 };
 
-// Throws std::invalid_argument when the document is not a walker job of a task with gaits.
+// Throws std::invalid_argument when the document is not a walker job of a task with gaits, and
+// records::RecordError when a stored point does not follow the contract.
 WalkerJobResults walker_job_results(const nlohmann::json& document);
 
 // The converged point whose speed is closest to `speed` (any converged point when NaN) that has a

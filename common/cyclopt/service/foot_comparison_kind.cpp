@@ -1,6 +1,8 @@
 #include "cyclopt/service/foot_comparison_kind.hpp"
 
 #include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -89,7 +91,6 @@ storage::SolutionPoint not_found(storage::PointKey key, const studies::BestPoint
   p.key = key;
   p.parameter = b.speed;
   p.status = "not found";
-  p.values["reason"] = b.reason;
   return p;
 }
 
@@ -127,10 +128,13 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       const studies::BestPoint& b = s.best[static_cast<std::size_t>(i)];
       const storage::PointKey key{1 + static_cast<int>(k), i};
       storage::SolutionPoint p = b.found ? point_of(family, b.point, key) : not_found(key, b);
-      p.values["foot"] = s.name;
-      if (b.found) p.values["found_by"] = studies::describe(b);
-      if (std::isfinite(s.f_mech[static_cast<std::size_t>(i)])) p.values["f_mech"] = s.f_mech[static_cast<std::size_t>(i)];
-      p.values["sweep_seconds"] = s.seconds;
+      records::ComparedSpeedRecord r;
+      r.foot = s.name;
+      if (b.found) r.found_by = studies::describe(b);
+      else r.reason = b.reason;
+      r.f_mech = s.f_mech[static_cast<std::size_t>(i)];
+      r.sweep_seconds = s.seconds;
+      p.values.update(nlohmann::json(r));
       ctx.store_point(p);
       stored[k].push_back(std::move(p));
     }
@@ -166,17 +170,20 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
     const int best = r.best_foot[static_cast<std::size_t>(i)];
     const double ref = r.feet[0].f_mech[static_cast<std::size_t>(i)];
     storage::SolutionPoint p;
+    records::ComparedSpeedRecord c;
     if (best < 0) {
       p.key = {0, i};
       p.parameter = job.walker.speeds[static_cast<std::size_t>(i)];
       p.status = "not found";
-      p.values["reason"] = "no compared foot has a point at this speed";
+      c.reason = "no compared foot has a point at this speed";
     } else {
       p = stored[static_cast<std::size_t>(best)][static_cast<std::size_t>(i)];
       p.key = {0, i};
-      if (std::isfinite(ref) && ref > 0.0) p.values["saving"] = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
+      c = p.values.get<records::ComparedSpeedRecord>();
+      if (std::isfinite(ref) && ref > 0.0) c.saving = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
     }
-    if (std::isfinite(ref)) p.values["reference_f_mech"] = ref;
+    c.reference_f_mech = ref;
+    p.values.update(nlohmann::json(c));
     ctx.store_point(p);
   }
   for (int k = 0; k < feet; ++k) {
@@ -186,22 +193,24 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
     p.parameter = 1 + k;
     p.objective = s.mean_f_mech;
     p.status = s.common_speeds > 0 ? "ok" : "no common speeds";
-    p.values["foot"] = s.name;
-    p.values["reference"] = k == 0;
-    p.values["mean_f_mech"] = std::isfinite(s.mean_f_mech) ? nlohmann::json(s.mean_f_mech) : nlohmann::json(nullptr);
-    p.values["saving"] = std::isfinite(s.saving) ? nlohmann::json(s.saving) : nlohmann::json(nullptr);
-    p.values["common_speeds"] = s.common_speeds;
-    p.values["speeds_found"] = s.speeds_found;
-    p.values["speeds"] = speeds;
-    p.values["best_fitted"] = k == r.best_mean_foot;
-    p.values["sweep_seconds"] = s.seconds;
-    p.values["curves"] = s.curves;
-    p.values["foot_spec"] = foot::to_json(job.feet[static_cast<std::size_t>(k)]);
+    records::ComparedFootRecord f;
+    f.foot = s.name;
+    f.reference = k == 0;
+    f.mean_f_mech = s.mean_f_mech;
+    f.saving = s.saving;
+    f.common_speeds = s.common_speeds;
+    f.speeds_found = s.speeds_found;
+    f.speeds = speeds;
+    f.best_fitted = k == r.best_mean_foot;
+    f.sweep_seconds = s.seconds;
+    f.curves = s.curves;
+    f.foot_spec = io::to_json(job.feet[static_cast<std::size_t>(k)]);
     if (k == 0) {
-      p.values["envelope_saving"] = std::isfinite(r.envelope_saving) ? nlohmann::json(r.envelope_saving) : nlohmann::json(nullptr);
-      p.values["envelope_common_speeds"] = r.envelope_common_speeds;
-      p.values["comparison_seconds"] = r.seconds;
+      f.envelope_saving = r.envelope_saving;
+      f.envelope_common_speeds = r.envelope_common_speeds;
+      f.comparison_seconds = r.seconds;
     }
+    p.values = f;
     ctx.store_point(p);
   }
 }

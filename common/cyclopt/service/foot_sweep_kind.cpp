@@ -1,7 +1,7 @@
 #include "cyclopt/service/foot_sweep_kind.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/foot/foot_report.hpp"
+#include "cyclopt/io/foot_report.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -85,7 +85,7 @@ void run(const FootSweep& s, JobContext& ctx) {
     if (ctx.stop_reason() != StopReason::none) return;
     delay(s.point_delay_ms, ctx);
     if (ctx.stop_reason() != StopReason::none) return;
-    const nlohmann::json report = foot::foot_report(foot_at(s, s.values[i]), {.samples = s.samples});
+    const nlohmann::json report = io::foot_report(foot_at(s, s.values[i]), {.samples = s.samples});
     storage::SolutionPoint p;
     p.key = {0, i};
     p.parameter = s.values[i];

@@ -2,6 +2,8 @@
 
 #include "cyclopt/giant_swing/one_step_map.hpp"
 #include "cyclopt/giant_swing/seed_optimiser.hpp"
+#include "cyclopt/io/seed_method_json.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/service/giant_swing_job_spec.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 
@@ -15,7 +17,7 @@ using namespace giant_swing;
 
 void add_rounds(const SimulationResult& sim, double omega, nlohmann::json& values) {
   nlohmann::json rounds = nlohmann::json::array();
-  for (const RoundResult& r : sim.rounds) rounds.push_back(to_json(r, omega));
+  for (const RoundResult& r : sim.rounds) rounds.push_back(io::to_json(r, omega));
   values["rounds"] = rounds;
   values["rounds_completed"] = sim.rounds.size();
   if (sim.failed) {
@@ -29,7 +31,7 @@ storage::SolutionPoint seed_point(const Model& model, const GiantSwingJob& job, 
   const SeedMethodResult r = optimise_seed_method(model, job.task);
   ctx.count_iterations(r.integrations);
   storage::SolutionPoint p;
-  p.values = to_json(r, job.task);
+  p.values = io::to_json(r, job.task);
   add_rounds(r.best.simulation, job.task.omega, p.values);
   p.values["integrations"] = r.integrations;
   p.objective = r.best.score;
@@ -47,7 +49,7 @@ storage::SolutionPoint bezier_point(const Model& model, const GiantSwingJob& job
   const MinimumJerkResult r = solve_minimum_jerk(model, job.task, settings);
   if (r.coefficients.size() == 0) throw std::runtime_error("giant swing (bezier): " + r.message);
   storage::SolutionPoint p;
-  p.values["task"] = to_json(job.task);
+  p.values["task"] = io::to_json(job.task);
   p.values["coefficients_rad"] = std::vector<double>(r.coefficients.begin(), r.coefficients.end());
   p.values["free_coefficients"] = r.coefficients.size();
   p.values["reduced_model"] = {{"jerk_rad2_s5", r.jerk},

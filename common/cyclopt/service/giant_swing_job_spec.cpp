@@ -1,5 +1,6 @@
 #include "cyclopt/service/giant_swing_job_spec.hpp"
 
+#include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 
 #include <algorithm>
@@ -51,12 +52,7 @@ GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobF
   nlohmann::json task = {{"task", giant_swing::to_string(motions().at(job.motion))}};
   for (const auto& [key, value] : options.items())
     if (std::find(kBezierKeys.begin(), kBezierKeys.end(), key) == kBezierKeys.end()) task[key] = value;
-  try {
-    job.task = giant_swing::task_spec_from_json(task, "options");
-  } catch (const giant_swing::TaskSpecError& e) {
-    const std::string what = e.what();
-    throw SpecError(e.field(), what.substr(std::min(what.size(), e.field().size() + 2)));
-  }
+  job.task = io::task_spec_from_json(task, "options");
   giant_swing::MinimumJerkProblemOptions& p = job.bezier.problem;
   if (auto n = optional_integer(options, "options", "free_coefficients", giant_swing::kMinFreeBezierCoefficients,
                                 giant_swing::kMaxFreeBezierCoefficients))

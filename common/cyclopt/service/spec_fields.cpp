@@ -2,19 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace cyclopt::service {
 
 namespace {
 std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-template <class T>
-std::string range_text(T lo, T hi) {
-  std::ostringstream os;
-  os << "[" << lo << ", " << hi << "]";
-  return os.str();
-}
 }  // namespace
 
 std::string join(const std::vector<std::string>& items, const std::string& separator) {

@@ -3,7 +3,7 @@
 // the JSON path (e.g. "limits.max_wall_seconds") and whose message gives the admissible range.
 // Job kinds use these for their own fields.
 
-#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/errors/spec_error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -12,8 +12,6 @@
 #include <vector>
 
 namespace cyclopt::service {
-
-using foot::SpecError;
 
 // `path` is the JSON path of the field itself.
 double number_value(const nlohmann::json& v, const std::string& path, double lo, double hi);

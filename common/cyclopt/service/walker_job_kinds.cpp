@@ -35,9 +35,7 @@ void run_evaluate(const WalkerJob& job, JobContext& ctx) {
   go.objective = job.problem.objective;
   go.speed = v;
   go.quadrature = job.problem.quadrature;
-  storage::SolutionPoint p = point_of(ev.evaluate(start.x, go), {0, 0}, v);
-  p.values["x"] = std::vector<double>(start.x.data(), start.x.data() + start.x.size());
-  p.values["start"] = start.origin;
+  storage::SolutionPoint p = point_of(ev.evaluate(start.x, go), start, {0, 0}, v);
   p.iterations = 1;
   ctx.count_iterations(1);
   ctx.store_point(p);

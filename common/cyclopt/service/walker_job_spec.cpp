@@ -1,6 +1,7 @@
 #include "cyclopt/service/walker_job_spec.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/service/design_bounds_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -15,7 +16,7 @@ foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
     } catch (const SpecError& e) {
       throw SpecError(path, e.what());
     }
-  return foot::foot_spec_from_json(object_value(v, path), path);
+  return io::foot_spec_from_json(object_value(v, path), path);
 }
 
 std::vector<std::string> walker_job_fields(bool sweep) {

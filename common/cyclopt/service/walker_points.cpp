@@ -1,5 +1,7 @@
 #include "cyclopt/service/walker_points.hpp"
 
+#include "cyclopt/records/walker_point_record.hpp"
+#include "cyclopt/service/walker_records.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <algorithm>
@@ -8,32 +10,53 @@
 
 namespace cyclopt::service {
 
-storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, storage::PointKey key, double parameter) {
+namespace {
+
+// The point of `gait` with `values` (whose gait it sets) as its values.
+storage::SolutionPoint stored_point(const walker::PeriodicGait<double>& gait, records::WalkerPointRecord values,
+                                    storage::PointKey key, double parameter) {
   storage::SolutionPoint p;
   p.key = key;
   p.parameter = parameter;
-  nlohmann::json g = walker::gait_to_json(gait, true);
-  if (g.contains("trajectory")) {
-    p.trajectory = g["trajectory"];
-    g.erase("trajectory");
-  }
-  p.values["gait"] = g;
+  values.gait = gait_record(gait);
   if (gait.real) {
+    if (const auto t = trajectory_record(gait.trajectory)) p.trajectory = nlohmann::json(*t);
     p.objective = gait.objective;
     p.constraint_violation = std::max({0.0, std::abs(gait.speed_equality), gait.inequalities.maxCoeff()});
   }
   p.status = gait.real ? "ok" : "no real solution";
+  p.values = values;
   return p;
 }
 
-storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter) {
-  storage::SolutionPoint p = point_of(opt.gait, key, parameter);
+records::WalkerPointRecord optimum_values(const walker::GaitOptimum& opt) {
+  records::WalkerPointRecord v;
+  v.solver = solver_record(opt.summary);
+  v.start = opt.start;
+  v.start_objective = opt.start_objective;
+  return v;
+}
+
+storage::SolutionPoint optimum_point(const walker::GaitOptimum& opt, const records::WalkerPointRecord& values,
+                                     storage::PointKey key, double parameter) {
+  storage::SolutionPoint p = stored_point(opt.gait, values, key, parameter);
   p.iterations = opt.summary.iterations;
   p.status = nlp::to_string(opt.summary.termination);
-  p.values["solver"] = walker::summary_to_json(opt.summary);
-  p.values["start"] = opt.start;
-  p.values["start_objective"] = opt.start_objective;
   return p;
+}
+
+}  // namespace
+
+storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, const walker::GaitStart& start,
+                                storage::PointKey key, double parameter) {
+  records::WalkerPointRecord v;
+  v.start = start.origin;
+  v.x.assign(start.x.data(), start.x.data() + start.x.size());
+  return stored_point(gait, v, key, parameter);
+}
+
+storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter) {
+  return optimum_point(opt, optimum_values(opt), key, parameter);
 }
 
 storage::SolutionPoint point_of(const continuation::ParametricProblem& family, const continuation::CurvePoint& c,
@@ -44,17 +67,17 @@ storage::SolutionPoint point_of(const continuation::ParametricProblem& family, c
   opt.z = c.x;
   opt.gait = dynamic_cast<const walker::GaitProblem&>(*problem).gait_at(c.x);
   opt.start = c.predictor_attempts > 0 ? "QP predictor" : "previous point";
-  storage::SolutionPoint p = point_of(opt, key, c.parameter);
-  p.values["curve_id"] = c.curve_id;
-  p.values["on_grid"] = c.on_grid;
-  p.values["converged"] = c.converged;
-  p.values["predictor_attempts"] = c.predictor_attempts;
-  p.values["predictor_steps"] = c.predictor_steps;
-  if (std::isfinite(c.kappa)) p.values["kappa"] = c.kappa;
-  p.values["trust_region"] = c.trust_region;
-  p.values["point_seconds"] = c.seconds;
-  p.values["x"] = std::vector<double>(c.x.data(), c.x.data() + c.x.size());
-  return p;
+  records::WalkerPointRecord v = optimum_values(opt);
+  v.continuation = records::ContinuationStepRecord{.curve_id = c.curve_id,
+                                                   .on_grid = c.on_grid,
+                                                   .converged = c.converged,
+                                                   .predictor_attempts = c.predictor_attempts,
+                                                   .predictor_steps = c.predictor_steps,
+                                                   .kappa = c.kappa,
+                                                   .trust_region = c.trust_region,
+                                                   .point_seconds = c.seconds};
+  v.x.assign(c.x.data(), c.x.data() + c.x.size());
+  return optimum_point(opt, v, key, c.parameter);
 }
 
 }  // namespace cyclopt::service

@@ -1,6 +1,7 @@
 #include "cyclopt/storage/result_store.hpp"
 
 #include "cyclopt/storage/results_schema.hpp"
+#include "cyclopt/storage/schema_version.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -88,7 +89,7 @@ void check_integrity(Connection& db, const std::string& path) {
                        "sqlite3 '" + path + "' .recover");
 }
 
-// Columns added after schema version 1 was first deployed: added in place to older files.
+// Columns added while schema version 1 was deployed: added to older files (migration to version 2).
 void add_missing_columns(Connection& db) {
   std::set<std::string> columns;
   {
@@ -136,15 +137,18 @@ ResultStore::ResultStore(const std::string& path, OpenMode mode)
     : db_(checked_path(path, mode), mode == OpenMode::read_only) {
   if (mode == OpenMode::read_only) {
     db_.exec("PRAGMA query_only = ON");
+    check_schema_version(stored_schema_version(db_, path), path, true);
     return;
   }
   check_integrity(db_, path);
+  check_schema_version(stored_schema_version(db_, path), path, false);
   db_.exec("PRAGMA journal_mode = WAL");
   db_.exec("PRAGMA synchronous = NORMAL");
   db_.exec(results_schema_sql());
   add_missing_columns(db_);
   allow_every_job_state(db_);
   db_.exec(results_schema_sql());  // the indexes of a rebuilt jobs table
+  record_schema_version(db_);        // a version-1 file is now migrated
   db_.exec("PRAGMA foreign_keys = ON");
 }
 

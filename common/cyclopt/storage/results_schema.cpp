@@ -5,7 +5,6 @@ namespace cyclopt::storage {
 std::string_view results_schema_sql() {
   return R"sql(
 CREATE TABLE IF NOT EXISTS schema_info (key TEXT PRIMARY KEY, value TEXT NOT NULL);
-INSERT OR IGNORE INTO schema_info (key, value) VALUES ('version', '1');
 CREATE TABLE IF NOT EXISTS jobs (
   id INTEGER PRIMARY KEY,
   request_id TEXT NOT NULL UNIQUE,

@@ -1,5 +1,5 @@
 #pragma once
-// The SQLite schema of the results database (version 1). The database runs in WAL mode with
+// The SQLite schema of the results database (version 2, kSchemaVersion). The database runs in WAL mode with
 // synchronous=NORMAL and foreign keys on: every committed point survives a kill -9 of the server.
 //
 //   jobs          one row per accepted submission; also the durable queue.
@@ -37,7 +37,14 @@
 //                 that a resumed attempt reuses (a sweep's finished solves and continuation runs,
 //                 service/sweep_checkpoints.hpp); not results. Added after version 1 was
 //                 deployed; created in place in older files.
-//   schema_info   (key, value): "version" = 1
+//   schema_info   (key, value): "version" = kSchemaVersion, checked on every open
+//                 (schema_version.hpp): older files are migrated by a server, newer ones refused
+//
+// Versions: 1 the first deployed layout, which grew in place while deployed (jobs.sender,
+// estimated_seconds, points_converged, solutions.required, checkpoints, state 'incomplete');
+// 2 the same tables, with values_json and the "json" trajectories holding the records of the
+// result contract (records/: gait, solver, walker point, foot comparison) and the version checked
+// on open. Migrating 1 -> 2 adds what a version-1 file lacks and records version 2.
 //
 // Example queries: README.md, section "The service".
 
@@ -45,7 +52,7 @@
 
 namespace cyclopt::storage {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 
 // DDL creating every table and index (IF NOT EXISTS, so it is idempotent).
 std::string_view results_schema_sql();

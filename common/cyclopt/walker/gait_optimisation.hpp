@@ -1,13 +1,11 @@
 #pragma once
 // One call from a walker problem to an optimal gait: start (automatic starting gait, a given x, or
-// a warm start), solve with the chosen NLP solver, and report the gait at the solution, with a
-// JSON form shared by the command line and the service.
+// a warm start), solve with the chosen NLP solver, and report the gait at the solution. (What the
+// service stores of it: service/walker_records.hpp, the result contract of records/.)
 
 #include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <optional>
 
@@ -26,11 +24,5 @@ struct GaitOptimum {
 // options.speed. Throws std::runtime_error when no starting gait exists.
 GaitOptimum optimise_gait(const WalkerModel<double>& model, const GaitProblemOptions& options,
                           const nlp::SolverOptions& solver, const std::optional<Eigen::VectorXd>& start = {});
-
-// Scalars of a gait (objective, f_mech, f_usq, step length and period, speed, Lambda, impact
-// loss, largest inequality, stability) and, if `trajectories`, its states and torques on the grid.
-nlohmann::json gait_to_json(const PeriodicGait<double>& gait, bool trajectories);
-// The summary of a solve, for reports.
-nlohmann::json summary_to_json(const nlp::SolverSummary& summary);
 
 }  // namespace cyclopt::walker

@@ -1,20 +1,25 @@
-#include "cyclopt/foot/foot_report.hpp"
+#include "cyclopt/io/foot_report.hpp"
 
 #include "cyclopt/foot/convexity_constraints.hpp"
 #include "cyclopt/foot/mass_properties.hpp"
 #include "cyclopt/foot/rolling_kinematics.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <stdexcept>
 
-namespace cyclopt::foot {
+namespace cyclopt::io {
+
+using namespace foot;
+
 namespace {
 
 FootProfile<double> profile_of(const FootSpec& spec) {
   return make_profile(spec.model, spec.parameters, spec.periodic_terms);
 }
 
+// One sample of the rolling kinematics at foot angle theta (profile angle, before theta_F0).
 nlohmann::json rolling_sample(const FootProfile<double>& prof, double theta) {
   const RollingContact<double> c = rolling_contact(prof, theta);
   const Vector2<double> ankle = ankle_position(c);
@@ -29,11 +34,9 @@ nlohmann::json rolling_sample(const FootProfile<double>& prof, double theta) {
 
 }  // namespace
 
-nlohmann::json rolling_sample(const FootSpec& spec, double theta) { return rolling_sample(profile_of(spec), theta); }
-
-nlohmann::json foot_report(const FootSpec& spec, const FootReportOptions& options) {
+nlohmann::json foot_report(const foot::FootSpec& spec, const FootReportOptions& options) {
   if (options.samples < 2) throw std::invalid_argument("foot report: samples must be >= 2, got " + std::to_string(options.samples));
-  validate(spec);
+  foot::validate(spec);
   const FootProfile<double> prof = profile_of(spec);
   nlohmann::json r;
   r["spec"] = to_json(spec);
@@ -67,4 +70,4 @@ nlohmann::json foot_report(const FootSpec& spec, const FootReportOptions& option
   return r;
 }
 
-}  // namespace cyclopt::foot
+}  // namespace cyclopt::io

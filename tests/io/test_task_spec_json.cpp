@@ -1,6 +1,6 @@
 // Task specifications in JSON (seed 000, ch. 5 tasks): defaults, round trip, and rejection of bad
 // input with errors naming the field and the admissible range.
-#include "cyclopt/giant_swing/task_spec.hpp"
+#include "cyclopt/io/task_spec_json.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -8,12 +8,13 @@
 #include <fstream>
 #include <functional>
 
-namespace cyclopt::giant_swing {
+namespace cyclopt::io {
 namespace {
 
+using namespace giant_swing;
 using nlohmann::json;
 
-TEST(TaskSpec, ChapterFiveDefaults) {
+TEST(TaskSpecJson, ChapterFiveDefaults) {
   EXPECT_NEAR(task_spec_from_json(json{{"task", "accelerating"}}).initial_rate * kDegPerRad, 20.0, 1e-12);
   EXPECT_NEAR(task_spec_from_json(json{{"task", "decelerating"}}).initial_rate * kDegPerRad, 80.0, 1e-12);
   EXPECT_EQ(task_spec_from_json(json{{"task", "periodic_sequence"}}).rounds, 10);
@@ -24,7 +25,7 @@ TEST(TaskSpec, ChapterFiveDefaults) {
   EXPECT_EQ(single.weights.alpha_rate, 1.0);
 }
 
-TEST(TaskSpec, RoundTrips) {
+TEST(TaskSpecJson, RoundTrips) {
   const json in = {{"task", "periodic_sequence"},
                    {"rounds", 6},
                    {"weights", {{"jerk", 0.01}}},
@@ -42,13 +43,13 @@ void expect_rejected(const json& j, const std::string& field, const std::string&
   try {
     task_spec_from_json(j);
     ADD_FAILURE() << "accepted: " << j.dump();
-  } catch (const TaskSpecError& e) {
+  } catch (const SpecError& e) {
     EXPECT_EQ(e.field(), field) << e.what();
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
 }
 
-TEST(TaskSpec, RejectsBadInputNamingTheField) {
+TEST(TaskSpecJson, RejectsBadInputNamingTheField) {
   expect_rejected(json{{"omega_deg_s", 40}}, "task.task", "single_swing");
   expect_rejected(json{{"task", "triple_salto"}}, "task.task", "decelerating");
   expect_rejected(json{{"task", "single_swing"}, {"omega_deg_s", -3}}, "task.omega_deg_s", "[1, 360] deg/s");
@@ -67,14 +68,8 @@ TEST(TaskSpec, RejectsBadInputNamingTheField) {
   expect_rejected(json::array(), "task", "JSON object");
 }
 
-}  // namespace
-}  // namespace cyclopt::giant_swing
-
-namespace cyclopt::giant_swing {
-namespace {
-
 // proto/schemas/giant_swing_task.schema.json states the same fields and ranges as the parser.
-TEST(TaskSpec, SchemaMatchesTheParser) {
+TEST(TaskSpecJson, SchemaMatchesTheParser) {
   std::ifstream in(std::string(CYCLOPT_SOURCE_DIR) + "/proto/schemas/giant_swing_task.schema.json");
   ASSERT_TRUE(in) << "schema file missing";
   const json schema = json::parse(in);
@@ -90,7 +85,7 @@ TEST(TaskSpec, SchemaMatchesTheParser) {
       try {
         task_spec_from_json(wrap(key, above));
         ADD_FAILURE() << key << " accepted above its maximum";
-      } catch (const TaskSpecError& e) {
+      } catch (const SpecError& e) {
         EXPECT_EQ(e.field(), path + key) << e.what();
       }
     }
@@ -115,4 +110,4 @@ TEST(TaskSpec, SchemaMatchesTheParser) {
 }
 
 }  // namespace
-}  // namespace cyclopt::giant_swing
+}  // namespace cyclopt::io

@@ -1,13 +1,14 @@
 #pragma once
 // A complete, machine-readable description of one foot: its specification, the derived polygon
 // transitions, admissible angle range, mass properties (appendix E) and the rolling kinematics
-// sampled over the admissible range. Used by the command-line foot report and the service.
+// sampled over the admissible range, as JSON. Used by the command-line foot report and the
+// service's foot sweep.
 
 #include "cyclopt/foot/foot_spec.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
-namespace cyclopt::foot {
+namespace cyclopt::io {
 
 struct FootReportOptions {
   int samples = 61;  // angles over the admissible range (>= 2)
@@ -15,9 +16,6 @@ struct FootReportOptions {
 
 // Builds the report. Mass properties appear when the spec has a density; theta_F0 is the
 // spec's own or, failing that, the one from eq. (E.7).
-nlohmann::json foot_report(const FootSpec& spec, const FootReportOptions& options = {});
+nlohmann::json foot_report(const foot::FootSpec& spec, const FootReportOptions& options = {});
 
-// One sample of the rolling kinematics at foot angle theta (profile angle, before theta_F0).
-nlohmann::json rolling_sample(const FootSpec& spec, double theta);
-
-}  // namespace cyclopt::foot
+}  // namespace cyclopt::io

@@ -1,0 +1,193 @@
+// The result contract (records/): every record survives to_json -> text -> from_json unchanged,
+// NaN survives as null, and a missing or mistyped member is an error naming it.
+#include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/solver_record.hpp"
+#include "cyclopt/records/walker_point_record.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cyclopt::records {
+namespace {
+
+// Through the text the database stores.
+template <class Record>
+Record round_trip(const Record& r) {
+  return nlohmann::json::parse(nlohmann::json(r).dump()).get<Record>();
+}
+
+template <class Record>
+std::string error_of(const nlohmann::json& j) {
+  try {
+    j.get<Record>();
+  } catch (const RecordError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+GaitRecord gait() {
+  GaitRecord g;
+  g.real = true;
+  g.objective = 0.11;
+  g.f_mech = 0.12;
+  g.f_usq = 3.5;
+  g.mean_speed = 1.01;
+  g.step_length = 0.52;
+  g.step_period = 0.515;
+  g.floquet_multiplier = 0.42;
+  g.stable = true;
+  g.impact_energy_loss = 4.25;
+  g.max_inequality = -1e-3;
+  g.speed_equality = 2e-12;
+  g.theta_plus = 0.31;
+  g.theta_minus = -0.29;
+  g.bezier_coefficients = {{0.1, 0.2, 0.3}, {-0.1, -0.2, -0.3}};
+  return g;
+}
+
+GaitTrajectoryRecord trajectory() {
+  GaitTrajectoryRecord t;
+  t.time = {0.0, 0.25, 0.5};
+  t.theta = {0.3, 0.0, -0.3};
+  t.q = {{0.3, 0.0, -0.3}, {1, 2, 3}};
+  t.q_dot = {{4, 5, 6}, {7, 8, 9}};
+  t.torque = {{10, 11, 12}};
+  t.contact_force = {{13, 14, 15}, {16, 17, 18}};
+  t.hip = {{0, 0.1, 0.2}, {0.9, 0.91, 0.9}};
+  t.swing_contact = {{-0.2, 0, 0.2}, {0, 0.03, 0}};
+  t.stance_foot_angle = {0.01, 0.02, 0.03};
+  return t;
+}
+
+SolverRecord solver() {
+  SolverRecord s;
+  s.termination = "converged";
+  s.success = true;
+  s.message = "optimal";
+  s.iterations = 17;
+  s.function_evaluations = 20;
+  s.jacobian_evaluations = 18;
+  s.failed_evaluations = 1;
+  s.wall_seconds = 0.75;
+  s.objective = 0.12;
+  s.kkt_error = 1e-9;
+  s.constraint_violation = 1e-11;
+  s.x = {0.1, -0.2};
+  return s;
+}
+
+TEST(ResultRecords, GaitFamilyRoundTrips) {
+  EXPECT_EQ(round_trip(gait()), gait());
+  GaitRecord none;
+  none.failure = "zeta became negative at grid point 7";
+  EXPECT_FALSE(round_trip(none).real);
+  EXPECT_EQ(round_trip(none).failure, none.failure);
+  EXPECT_TRUE(std::isnan(round_trip(none).f_mech));
+  EXPECT_FALSE(nlohmann::json(none).contains("f_mech"));  // a gait that does not exist has no numbers
+  EXPECT_EQ(round_trip(trajectory()), trajectory());
+  GaitTrajectoryRecord point_feet = trajectory();
+  point_feet.stance_foot_angle.clear();
+  EXPECT_FALSE(nlohmann::json(point_feet).contains("stance_foot_angle"));
+  EXPECT_EQ(round_trip(point_feet), point_feet);
+}
+
+TEST(ResultRecords, SolverRecordRoundTrips) { EXPECT_EQ(round_trip(solver()), solver()); }
+
+TEST(ResultRecords, WalkerPointRecordRoundTrips) {
+  WalkerPointRecord p;
+  p.gait = gait();
+  p.solver = solver();
+  p.start = "QP predictor";
+  p.start_objective = 0.2;
+  p.continuation = ContinuationStepRecord{.curve_id = 2, .on_grid = true, .converged = true, .predictor_attempts = 1,
+                                          .predictor_steps = 3, .kappa = 0.4, .trust_region = 0.05, .point_seconds = 1.5};
+  p.x = {0.5, 0.6};
+  EXPECT_EQ(round_trip(p), p);
+  EXPECT_TRUE(solved(p));
+  p.solver->success = false;
+  EXPECT_FALSE(solved(p));
+  const WalkerPointRecord not_found;  // a speed no sweep step reached: nothing but the job kind's own members
+  EXPECT_EQ(round_trip(not_found), not_found);
+  EXPECT_FALSE(solved(not_found));
+  // The members a job kind adds beside the record are left to it.
+  nlohmann::json with_extras = p;
+  with_extras["found_by"] = "multistart at 1.3 m/s";
+  EXPECT_EQ(with_extras.get<WalkerPointRecord>(), p);
+}
+
+TEST(ResultRecords, FootComparisonRecordsRoundTrip) {
+  ComparedSpeedRecord s;
+  s.foot = "P2-shoes-left-HMT-SG";
+  s.found_by = "continuation up from 1.3 m/s";
+  s.f_mech = 0.031;
+  s.sweep_seconds = 12.5;
+  s.saving = 0.4;
+  s.reference_f_mech = 0.052;
+  EXPECT_EQ(round_trip(s), s);
+  ComparedSpeedRecord missing;
+  missing.reason = "no compared foot has a point at this speed";
+  EXPECT_EQ(round_trip(missing).reason, missing.reason);
+  EXPECT_TRUE(std::isnan(round_trip(missing).f_mech));
+
+  ComparedFootRecord f;
+  f.foot = "point";
+  f.reference = true;
+  f.best_fitted = false;
+  f.mean_f_mech = 0.05;
+  f.saving = 0.0;
+  f.common_speeds = 21;
+  f.speeds_found = 21;
+  f.speeds = 21;
+  f.curves = 3;
+  f.sweep_seconds = 30.0;
+  f.foot_spec = {{"model", "point"}};
+  f.envelope_saving = 0.35;
+  f.envelope_common_speeds = 20;
+  f.comparison_seconds = 300.0;
+  EXPECT_EQ(round_trip(f), f);
+  EXPECT_TRUE(is_compared_foot(nlohmann::json(f)));
+  EXPECT_FALSE(is_compared_foot(nlohmann::json(s)));
+  ComparedFootRecord other = f;
+  other.reference = false;
+  other.envelope_saving.reset();
+  other.envelope_common_speeds.reset();
+  other.comparison_seconds.reset();
+  EXPECT_EQ(round_trip(other), other);
+}
+
+TEST(ResultRecords, NanIsStoredAsNullAndReadBackAsNan) {
+  GaitRecord g = gait();
+  g.floquet_multiplier = std::nan("");
+  const nlohmann::json j = nlohmann::json::parse(nlohmann::json(g).dump());
+  EXPECT_TRUE(j.at("floquet_multiplier").is_null());
+  EXPECT_TRUE(std::isnan(j.get<GaitRecord>().floquet_multiplier));
+  ComparedFootRecord f;
+  f.foot = "HM";
+  f.foot_spec = {{"model", "HM"}};
+  EXPECT_TRUE(nlohmann::json(f).at("mean_f_mech").is_null());
+  EXPECT_TRUE(std::isnan(round_trip(f).mean_f_mech));
+}
+
+TEST(ResultRecords, AMissingOrMistypedMemberIsAnErrorNamingIt) {
+  nlohmann::json g = gait();
+  g.erase("step_length");
+  EXPECT_EQ(error_of<GaitRecord>(g), "gait.step_length: is missing");
+  g = gait();
+  g["stable"] = "yes";
+  EXPECT_EQ(error_of<GaitRecord>(g), "gait.stable: must be true or false, got \"yes\"");
+  nlohmann::json t = trajectory();
+  t["q"][1] = 3;
+  EXPECT_EQ(error_of<GaitTrajectoryRecord>(t), "trajectory.q[1]: must be an array of numbers");
+  nlohmann::json s = solver();
+  s["iterations"] = 1.5;
+  EXPECT_EQ(error_of<SolverRecord>(s), "solver.iterations: must be an integer, got 1.5");
+  nlohmann::json p = {{"gait", gait()}, {"curve_id", 1}};
+  EXPECT_EQ(error_of<WalkerPointRecord>(p), "values.on_grid: is missing");
+  EXPECT_EQ(error_of<ComparedFootRecord>({{"foot_spec", {{"model", "point"}}}}), "values.foot: is missing");
+}
+
+}  // namespace
+}  // namespace cyclopt::records
