@@ -72,7 +72,8 @@ class Sweep {
   void begin_phase(SweepPhase phase, std::string detail, int total);
   void report();  // o_.on_progress of the current state; callers hold progress_mutex_
   double eta_seconds() const;
-  void reached(const CurvePoint& p);
+  // A converged point: marks its grid speed reached; `step`: it is the running run's next point.
+  void reached(const CurvePoint& p, bool step);
 
   const walker::WalkerModel<double>& model_;
   const walker::GaitProblemOptions& problem_;
@@ -110,9 +111,9 @@ void Sweep::begin_phase(SweepPhase phase, std::string detail, int total) {
   report();
 }
 
-void Sweep::reached(const CurvePoint& p) {
+void Sweep::reached(const CurvePoint& p, bool step) {
   const std::lock_guard lock(progress_mutex_);
-  ++progress_.phase_done;
+  if (step && p.on_grid) ++progress_.phase_done;  // grid speeds passed by this run
   for (std::size_t i = 0; i < o_.speeds.size(); ++i)
     if (same_speed(o_.speeds[i], p.parameter) && !reached_[i]) {
       reached_[i] = true;
@@ -253,8 +254,8 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
       stopped_ = true;
       return false;
     }
+    if (!skip && p.converged) reached(p, true);
     if (skip || !p.converged || !p.on_grid) return true;
-    reached(p);
     // An earlier run followed this curve from here on already (both directions are continued
     // from every start and every curve jumped to): HMT P2's runs from 1.3, 1.5 and 2.3 m/s
     // otherwise each went down to the same fold near 0.46 m/s (~27 s each).
@@ -291,6 +292,8 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     const std::lock_guard lock(progress_mutex_);
     continuation_wall_ += seconds_since(run_start);
   }
+  for (const CurvePoint& p : run.points)  // the start point too, which the callback may skip
+    if (p.converged) reached(p, false);
   for (int c = first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
