@@ -1,25 +1,20 @@
-// Issue 15, acceptance 2 (reduced): the design step of seed 001 section 10.2 at the design speed
-// only. Per density rho: the start foot P2-shoes-left-HMT with mass properties from its geometry
-// (appendix E), every foot parameter free with the gait, the bounds of eq. (10.1), a multistart of
-// N perturbations of the automatic starting gait at v; the best KKT point against the optimal
-// gaits of the start foot (P2 with the masses of Table 5.1, fixed) and of point feet (Table D.1)
-// at the same speed and objective. Not yet: the continuation over 0.3:0.1:2.3 m/s with the foot
-// free and the fixed-foot sweeps, so "speeds" counts the design speed only.
+// Issue 15, acceptance 2 and 3: the foot-design study of seed 001 section 10.2
+// (studies/foot_design.hpp) from P2-shoes-left-HMT: per density the design multistart at the
+// design speed, the free-foot continuation over the grid and the fixed-foot sweeps of the feet
+// optimal at the highest and lowest speed, against the start foot (its own masses) and point feet.
+// Prints per density the design, its active bounds (10.1), the classes of the optima, the time
+// per phase, and ends each block with
+//   rho R: saving vs start S %, vs point feet Q %, speeds N/21, wall T s
 //
-// usage: foot_design_bench [densities = 10] [starts = 6] [speed = 2.3] [configuration = sqp-dh]
-#include "cyclopt/foot/design_bounds.hpp"
+// usage: foot_design_bench [densities = 10] [starts = 20] [speeds = 0.3:0.1:2.3] [sweep_starts = 4]
+//   densities: comma-separated; speeds: FROM:STEP:TO (the design speed is the last)
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/foot/mass_properties.hpp"
-#include "cyclopt/nlp/multistart.hpp"
-#include "cyclopt/nlp/solve.hpp"
-#include "cyclopt/walker/gait_problem.hpp"
-#include "cyclopt/walker/model_parameters.hpp"
-#include "cyclopt/walker/starting_gait.hpp"
+#include "cyclopt/studies/foot_design.hpp"
 #include "machine_info.hpp"
-#include "solver_configuration.hpp"
 
-#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,80 +23,84 @@ using namespace cyclopt;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+std::vector<double> list(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(std::stod(item));
+  return out;
 }
 
-// f_mech of the optimal gait of a fixed foot at v from its automatic starting gait (NaN if no KKT point).
-double fixed_foot_optimum(const foot::FootSpec& spec, double v, const nlp::SolverOptions& so) {
-  const walker::WalkerModel<double> model = walker::make_walker_model(spec);
-  walker::GaitProblem problem(model, {walker::Objective::mechanical, v, walker::Quadrature::trapezoid, {}});
-  const walker::GaitEvaluator ev(model);
-  const nlp::SolverSummary s = nlp::solve(problem, so, problem.initial_point(walker::gait_start(ev, v, {}).x));
-  return s.success() ? s.objective : std::numeric_limits<double>::quiet_NaN();
+std::vector<double> grid(const std::string& text) {
+  double from = 0, step = 0, to = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf:%lf", &from, &step, &to) != 3 || !(step > 0) || to < from) {
+    std::fprintf(stderr, "speeds: expected FROM:STEP:TO, got '%s'\n", text.c_str());
+    std::exit(1);
+  }
+  std::vector<double> out;
+  for (int i = 0; from + i * step <= to + 1e-9; ++i) out.push_back(std::round((from + i * step) * 1e9) / 1e9);
+  return out;
+}
+
+void print_sweep(const studies::FootSweepSummary& s) {
+  std::printf("  %-28s speeds %2d/%zu, mean f_mech %.5f, %.1f s:", s.name.c_str(), s.speeds_found, s.f_mech.size(),
+              s.mean_f_mech, s.seconds);
+  for (double f : s.f_mech) std::printf(" %.4f", f);
+  std::printf("\n");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<double> densities = {10.0};
-  if (argc > 1) {
-    densities.clear();
-    std::stringstream in(argv[1]);
-    for (std::string item; std::getline(in, item, ',');) densities.push_back(std::stod(item));
-  }
-  const int starts = argc > 2 ? std::atoi(argv[2]) : 6;
-  const double v = argc > 3 ? std::atof(argv[3]) : 2.3;
-  const nlp::SolverOptions so = bench::solver_configuration(argc > 4 ? argv[4] : "sqp-dh");
+  studies::FootDesignOptions o;
+  o.densities = list(argc > 1 ? argv[1] : "10");
+  o.starts = argc > 2 ? std::atoi(argv[2]) : 20;
+  o.sweep.speeds = grid(argc > 3 ? argv[3] : "0.3:0.1:2.3");
+  o.sweep.starts = argc > 4 ? std::atoi(argv[4]) : 4;
+  o.design_speed = o.sweep.speeds.back();
+  o.on_step = [](const std::string& step) {
+    std::printf("-- %s\n", step.c_str());
+    std::fflush(stdout);
+    return true;
+  };
   std::printf("foot_design_bench on %s\n", bench::machine_line().c_str());
-  const foot::FootSpec p2 = foot::foot_preset("P2-shoes-left-HMT").spec;
-  auto t0 = std::chrono::steady_clock::now();
-  const double f_start = fixed_foot_optimum(p2, v, so);
-  const double f_point = fixed_foot_optimum(foot::foot_preset("point").spec, v, so);
-  std::printf("references at %.2f m/s: start foot P2 (Table 5.1 masses) f_mech %.5f, point feet %.5f (%.1f s)\n", v, f_start,
-              f_point, seconds_since(t0));
-  const foot::DesignBounds bounds;
-  std::vector<std::string> free;
-  for (const foot::ParameterInfo& info : foot::parameter_layout(foot::FootModel::hmt)) free.emplace_back(info.name);
-  for (double rho : densities) {
-    t0 = std::chrono::steady_clock::now();
-    foot::FootSpec start = p2;
-    start.density = rho;
-    start.parameters = foot::project_into_design_bounds(start.model, start.parameters, bounds, free);
-    const walker::WalkerModel<double> model = walker::make_walker_model(start);
-    walker::GaitProblemOptions po{walker::Objective::mechanical, v, walker::Quadrature::trapezoid, free};
-    po.design_bounds = bounds;
-    const walker::GaitEvaluator ev(model);
-    const Eigen::VectorXd centre = walker::gait_start(ev, v, {}).x;
-    const walker::GaitProblem shape(model, po);
-    nlp::MultistartOptions mo;
-    mo.num_starts = starts;
-    mo.base_seed = 1;
-    mo.solver = so;
-    mo.objective_tolerance = 1e-5;
-    mo.x_tolerance = 1e-2;
-    const nlp::MultistartResult r = nlp::multistart(
-        [&] { return std::make_unique<walker::GaitProblem>(model, po); },
-        [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, centre, 0.05, rng)); }, mo);
-    std::printf("rho %.0f kg/m^2: %d/%d starts KKT, %zu optima\n", rho, r.successes, starts, r.optima.size());
-    double f_best = std::numeric_limits<double>::quiet_NaN();
-    if (!r.optima.empty()) {
-      const Eigen::VectorXd& z = r.optima.front().x;
-      f_best = r.optima.front().objective;
-      const walker::WalkerModel<double> best = shape.model_at(z);
-      std::printf("  design:");
-      for (std::size_t k = 0; k < free.size(); ++k) std::printf(" %s %.4g", free[k].c_str(), best.foot_parameters(static_cast<Eigen::Index>(k)));
-      std::printf("\n  m_F %.3f kg, r_F %.1f mm, J_F %.2e kg m^2, theta_F0 %.3f rad, f_mech %.5f\n", best.segments[walker::m_F],
-                  1e3 * best.segments[walker::r_F], best.segments[walker::J_F], best.foot_zero_angle, f_best);
-      const foot::LinearInequalities li = foot::design_constraints(best.foot_model, bounds);
-      const Eigen::VectorXd margin = li.A * best.foot_parameters + li.b;
-      std::printf("  active bounds (10.1):");
-      for (Eigen::Index i = 0; i < margin.size(); ++i)
-        if (margin(i) <= 1e-6) std::printf(" [%s]", li.names[static_cast<std::size_t>(i)].c_str());
-      std::printf("\n");
+  std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep\n",
+              o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts);
+  const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
+  const walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
+  const studies::FootDesignResult r = studies::design_feet(start, problem, o);
+  std::printf("references (%.1f s):\n", r.reference_seconds);
+  print_sweep(r.start_foot);
+  print_sweep(r.point_feet);
+  const std::size_t n = o.sweep.speeds.size();
+  for (const studies::DensityDesign& d : r.designs) {
+    std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d)\n",
+                d.density, d.kkt_starts, o.starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
+                d.class_counts[3]);
+    for (std::size_t k = 0; k < d.optima.size(); ++k) {
+      const studies::DesignOptimum& m = d.optima[k];
+      std::printf("  optimum %zu: f %.5f, %s (%s)\n", k, m.objective, studies::to_string(m.classification.design_class),
+                  m.classification.reason.c_str());
     }
-    std::printf("rho %.0f: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/21, wall %.1f s\n", rho,
-                100.0 * (1.0 - f_best / f_start), 100.0 * (1.0 - f_best / f_point), r.optima.empty() ? 0 : 1,
-                seconds_since(t0));
+    if (d.best >= 0) {
+      const studies::DesignOptimum& b = d.optima[static_cast<std::size_t>(d.best)];
+      std::printf("  design (optimum %d):", d.best);
+      const auto layout = foot::parameter_layout(b.foot.model);
+      for (std::size_t k = 0; k < layout.size(); ++k) std::printf(" %s %.4g", std::string(layout[k].name).c_str(), b.foot.parameters[static_cast<Eigen::Index>(k)]);
+      std::printf("\n  m_F %.3f kg, r_F %.1f mm, J_F %.2e kg m^2, theta_F0 %.3f rad; active bounds (10.1):", b.mass,
+                  1e3 * b.com_distance, b.inertia, b.zero_angle);
+      for (const std::string& a : b.active_bounds) std::printf(" [%s]", a.c_str());
+      std::printf("\n  free-foot continuation: %zu points, %s; f_mech per speed:", d.free_foot.points.size(), d.free_foot.message.c_str());
+      for (double f : d.free_foot_f_mech) std::printf(" %.4f", f);
+      std::printf("\n  low-speed design at %.2f m/s\n", d.low_speed);
+      print_sweep(d.high);
+      print_sweep(d.low);
+      std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
+                  100 * d.low_saving_vs_point);
+    }
+    std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s\n",
+                d.multistart_seconds, d.continuation_seconds, d.sweep_seconds);
+    std::printf("rho %.4g: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/%zu, wall %.1f s\n", d.density,
+                100 * d.saving_vs_start, 100 * d.saving_vs_point, d.high.speeds_found, n, d.seconds);
   }
+  std::printf("total %.1f s (references %.1f s)\n", r.seconds, r.reference_seconds);
 }

@@ -1,0 +1,50 @@
+#pragma once
+// Degenerate optima of the foot-geometry optimisation (seed 001 section 10.2, issue 15 item 4),
+// recognised by documented rules instead of by eye. The seed discards three kinds of optimum:
+//   stilt      (Fig. 10.3a): the foot degenerates to a thin rod without area or mass, so the swing
+//              foot moves for free, and the walker takes very short, fast steps (60 mm at 38 Hz at
+//              2.3 m/s). Rule: foot area A (E.2) < kStiltArea, or step frequency > kStiltFrequency.
+//   wheel      (Fig. 10.3b): a near-circular sole centred at the ankle; the legs stay almost still
+//              and the walker rolls on the sole like a wheel. Rule: over the step the stance ankle
+//              travels more than kWheelRolling step lengths while the hip's horizontal offset from
+//              the stance ankle varies by less than kWheelLegSwing step lengths (in walking the
+//              leg sweeps about one step length under the hip).
+//   no rolling (Fig. 9.10a, 9.15): heel or toe walking - the contact point stays at one end of
+//              the sole. Rule: the contact point x_C = x_0 + F + F'' (2.21) travels less than
+//              kRollingFraction of the sole length (l_HM, + l_MT for HMT) during the stance.
+// The rules are checked in this order; the first that holds names the class. Point feet are
+// never degenerate (they have no sole).
+
+#include "cyclopt/walker/periodic_gait.hpp"
+#include "cyclopt/walker/walker_model.hpp"
+
+#include <string>
+
+namespace cyclopt::studies {
+
+enum class DesignClass { admissible, stilt, wheel, no_rolling };
+const char* to_string(DesignClass c);
+
+inline constexpr double kStiltArea = 1e-4;        // m^2 (1 cm^2; the seed's flat feet have tens of cm^2)
+inline constexpr double kStiltFrequency = 5.0;    // Hz (human walking: below 3 Hz)
+inline constexpr double kWheelRolling = 0.5;      // step lengths of ankle travel
+inline constexpr double kWheelLegSwing = 0.25;    // step lengths of hip-over-ankle excursion
+inline constexpr double kRollingFraction = 0.2;   // of the sole length
+
+struct DesignClassification {
+  DesignClass design_class = DesignClass::admissible;
+  std::string reason;        // the rule and the measured values
+  // The measured quantities the rules use.
+  double foot_area = 0.0;            // m^2
+  double step_frequency = 0.0;       // Hz
+  double ankle_travel = 0.0;         // m, max - min of the stance ankle's x over the step
+  double leg_swing = 0.0;            // m, max - min of x_H - x_A over the step
+  double contact_travel = 0.0;       // m, max - min of x_C over the step
+  double sole_length = 0.0;          // m
+};
+
+// `gait` must carry its trajectory (GaitOptions::trajectories); `model` is the model the gait was
+// computed for (the designed foot).
+DesignClassification classify_design(const walker::WalkerModel<double>& model, const walker::PeriodicGait<double>& gait);
+
+}  // namespace cyclopt::studies

@@ -1,0 +1,227 @@
+#include "cyclopt/studies/foot_design.hpp"
+
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/studies/walker_family.hpp"
+#include "cyclopt/walker/model_parameters.hpp"
+#include "cyclopt/walker/starting_gait.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace cyclopt::studies {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string rho_text(double rho) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "rho %.4g", rho);
+  return buf;
+}
+
+FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
+                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& o) {
+  return summarise_sweep(name, model, problem, speed_sweep(model, problem, o));
+}
+
+// Saving of `foot` against `reference` (foot_comparison.hpp), NaN without a reference sweep.
+double saving(const std::vector<double>& speeds, const FootSweepSummary& reference, const FootSweepSummary& foot) {
+  if (reference.f_mech.empty() || foot.f_mech.empty()) return kNaN;
+  return summarise_feet(speeds, {reference, foot}, 0).feet[1].saving;
+}
+
+class DesignStudy {
+ public:
+  DesignStudy(const foot::FootSpec& start, const walker::GaitProblemOptions& problem, const FootDesignOptions& o,
+              std::vector<std::string> free)
+      : start_(start), problem_(problem), o_(o), free_(std::move(free)) {}
+
+  DensityDesign at(double rho, const FootDesignResult& references);
+
+ private:
+  bool step(const std::string& text) const { return !o_.on_step || o_.on_step(text); }
+  DesignOptimum optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m) const;
+  walker::GaitProblemOptions free_problem(double speed) const {
+    walker::GaitProblemOptions po = problem_;
+    po.speed = speed;
+    po.free_parameters = free_;
+    po.design_bounds = o_.bounds;
+    return po;
+  }
+
+  const foot::FootSpec& start_;
+  const walker::GaitProblemOptions& problem_;
+  const FootDesignOptions& o_;
+  const std::vector<std::string> free_;
+};
+
+DesignOptimum DesignStudy::optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m) const {
+  DesignOptimum d;
+  d.objective = m.objective;
+  d.z = m.x;
+  d.starts = m.starts;
+  const walker::WalkerModel<double> designed = shape.model_at(m.x);
+  d.foot = start_;
+  d.foot.parameters = designed.foot_parameters;
+  d.foot.density = rho;
+  d.foot.theta_F0.reset();  // follows the geometry (E.7)
+  d.mass = designed.segments[walker::m_F];
+  d.com_distance = designed.segments[walker::r_F];
+  d.inertia = designed.segments[walker::J_F];
+  d.zero_angle = designed.foot_zero_angle;
+  const foot::LinearInequalities rows = foot::design_constraints(designed.foot_model, o_.bounds);
+  const Eigen::VectorXd margin = rows.A * designed.foot_parameters + rows.b;
+  for (Eigen::Index i = 0; i < margin.size(); ++i)
+    if (margin(i) <= 1e-6) d.active_bounds.push_back(rows.names[static_cast<std::size_t>(i)]);
+  const walker::PeriodicGait<double> gait = shape.gait_at(m.x);
+  if (gait.real)
+    d.classification = classify_design(designed, gait);
+  else
+    d.classification = {DesignClass::stilt, "the gait has no real periodic solution at the optimum: " + gait.failure};
+  return d;
+}
+
+DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
+  const Clock::time_point t0 = Clock::now();
+  DensityDesign d;
+  d.density = rho;
+  d.free_foot_f_mech.assign(o_.sweep.speeds.size(), kNaN);
+  d.saving_vs_start = d.saving_vs_point = d.low_saving_vs_start = d.low_saving_vs_point = kNaN;
+  const std::string name = rho_text(rho);
+
+  // 1. Design multistart at the design speed.
+  if (!step(name + ": design multistart at " + std::to_string(o_.design_speed) + " m/s")) return d.stopped = true, d;
+  foot::FootSpec start = start_;
+  start.density = rho;
+  start.theta_F0.reset();
+  start.parameters = foot::project_into_design_bounds(start.model, start.parameters, o_.bounds, free_);
+  const walker::WalkerModel<double> model = walker::make_walker_model(start);
+  const walker::GaitProblemOptions po = free_problem(o_.design_speed);
+  const walker::GaitEvaluator ev(model);
+  const Eigen::VectorXd centre = walker::gait_start(ev, o_.design_speed, {}).x;
+  const walker::GaitProblem shape(model, po);
+  nlp::MultistartOptions mo;
+  mo.num_starts = o_.starts;
+  mo.base_seed = o_.seed;
+  mo.solver = o_.sweep.continuation.corrector;
+  mo.solver.sqp.difference_hessian = true;  // distant starts: W_1 of (6.24), as in the speed sweep
+  mo.objective_tolerance = o_.objective_tolerance;
+  mo.x_tolerance = o_.x_tolerance;
+  const nlp::MultistartResult r = nlp::multistart(
+      [&] { return std::make_unique<walker::GaitProblem>(model, po); },
+      [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, centre, o_.scale, rng)); }, mo);
+  d.kkt_starts = r.successes;
+  for (const nlp::MultistartOptimum& m : r.optima) {
+    d.optima.push_back(optimum(shape, rho, m));
+    const DesignClass c = d.optima.back().classification.design_class;
+    ++d.class_counts[static_cast<int>(c)];
+    if (d.best < 0 && c == DesignClass::admissible) d.best = static_cast<int>(d.optima.size()) - 1;
+  }
+  d.multistart_seconds = seconds_since(t0);
+  if (d.best < 0) {
+    d.seconds = seconds_since(t0);
+    return d;
+  }
+  const DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];
+
+  // 2. Free-foot continuation downwards from the design speed.
+  const Clock::time_point t1 = Clock::now();
+  if (!step(name + ": free-foot continuation")) return d.stopped = true, d;
+  std::vector<double> grid{o_.design_speed};
+  for (auto it = o_.sweep.speeds.rbegin(); it != o_.sweep.speeds.rend(); ++it)
+    if (*it < o_.design_speed - 1e-12) grid.push_back(*it);
+  d.low_speed_foot = best.foot;
+  d.low_speed = o_.design_speed;
+  if (grid.size() >= 2) {
+    ContinuationOptions co = o_.sweep.continuation;
+    co.corrector.max_iterations = std::min(co.corrector.max_iterations, o_.sweep.corrector_max_iterations);
+    d.free_foot = continue_solution(walker_family(model, po, "speed"), best.z, grid, co);
+    for (const CurvePoint& p : d.free_foot.points) {
+      if (!p.converged) continue;
+      const walker::GaitProblem at(model, free_problem(p.parameter));
+      const walker::PeriodicGait<double> g = at.gait_at(p.x);
+      for (std::size_t i = 0; i < o_.sweep.speeds.size(); ++i)
+        if (std::abs(o_.sweep.speeds[i] - p.parameter) <= 1e-12 && g.real) d.free_foot_f_mech[i] = g.f_mech;
+      if (p.parameter < d.low_speed) {
+        d.low_speed = p.parameter;
+        d.low_speed_foot.parameters = at.model_at(p.x).foot_parameters;
+      }
+    }
+  }
+  d.continuation_seconds = seconds_since(t1);
+
+  // 3. Fixed-foot sweeps of the feet optimal at the highest and the lowest speed.
+  const Clock::time_point t2 = Clock::now();
+  if (!step(name + ": fixed-foot sweep of the design")) return d.stopped = true, d;
+  d.high = sweep_foot(name + " design", walker::make_walker_model(best.foot), problem_, o_.sweep);
+  if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
+  d.low = sweep_foot(name + " low-speed design", walker::make_walker_model(d.low_speed_foot), problem_, o_.sweep);
+  d.sweep_seconds = seconds_since(t2);
+  d.saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.high);
+  d.saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.high);
+  d.low_saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.low);
+  d.low_saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.low);
+  d.seconds = seconds_since(t0);
+  return d;
+}
+
+}  // namespace
+
+FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                             const FootDesignOptions& o) {
+  if (start.model == foot::FootModel::point) throw std::invalid_argument("foot: the start foot must be HM or HMT");
+  if (o.densities.empty()) throw std::invalid_argument("densities: need at least one density");
+  for (double rho : o.densities)
+    if (!(rho > 0.0) || !std::isfinite(rho)) throw std::invalid_argument("densities: each must be > 0 kg/m^2");
+  if (o.starts < 1) throw std::invalid_argument("starts: must be >= 1");
+  if (std::none_of(o.sweep.speeds.begin(), o.sweep.speeds.end(), [&](double v) { return std::abs(v - o.design_speed) <= 1e-12; }))
+    throw std::invalid_argument("design_speed: must be one of the speeds");
+  std::vector<std::string> free = o.free_parameters;
+  if (free.empty())
+    for (const foot::ParameterInfo& info : foot::parameter_layout(start.model)) free.emplace_back(info.name);
+  for (const std::string& name : free) {
+    const auto layout = foot::parameter_layout(start.model);
+    if (std::none_of(layout.begin(), layout.end(), [&](const foot::ParameterInfo& i) { return name == i.name; }))
+      throw std::invalid_argument("free_parameters: '" + name + "' is not a parameter of the " +
+                                  std::string(foot::to_string(start.model)) + " foot");
+  }
+  const foot::FootParameters<double> projected = foot::project_into_design_bounds(start.model, start.parameters, o.bounds, free);
+  const std::vector<std::string> violated = foot::violated_design_bounds(start.model, projected, o.bounds, 1e-12);
+  if (!violated.empty())
+    throw std::invalid_argument("design_bounds: the start foot violates " + violated.front() +
+                                " in a parameter that is not free");
+
+  const Clock::time_point t0 = Clock::now();
+  FootDesignResult result;
+  result.speeds = o.sweep.speeds;
+  if (o.references) {
+    if (o.on_step && !o.on_step("references: start foot and point feet")) return result;
+    foot::FootSpec own_masses = start;
+    own_masses.density.reset();
+    result.start_foot = sweep_foot("start foot " + start.name, walker::make_walker_model(own_masses), problem, o.sweep);
+    result.point_feet = sweep_foot("point feet", walker::make_walker_model(foot::foot_preset("point").spec), problem, o.sweep);
+    result.reference_seconds = seconds_since(t0);
+  }
+  DesignStudy study(start, problem, o, free);
+  for (double rho : o.densities) {
+    result.designs.push_back(study.at(rho, result));
+    const DensityDesign& d = result.designs.back();
+    if (d.stopped) break;
+    const int k = static_cast<int>(result.designs.size()) - 1;
+    if (std::isfinite(d.saving_vs_start) &&
+        (result.best_design < 0 || d.saving_vs_start > result.designs[static_cast<std::size_t>(result.best_design)].saving_vs_start))
+      result.best_design = k;
+  }
+  result.seconds = seconds_since(t0);
+  return result;
+}
+
+}  // namespace cyclopt::studies
