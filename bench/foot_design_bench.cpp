@@ -42,8 +42,11 @@ std::vector<double> grid(const std::string& text) {
 }
 
 void print_sweep(const studies::FootSweepSummary& s) {
-  std::printf("  %-28s speeds %2d/%zu, mean f_mech %.5f, %.1f s:", s.name.c_str(), s.speeds_found, s.f_mech.size(),
-              s.mean_f_mech, s.seconds);
+  double sum = 0.0;
+  for (double f : s.f_mech)
+    if (std::isfinite(f)) sum += f;
+  std::printf("  %-28s speeds %2d/%zu, mean f_mech %.5f over them, %.1f s:", s.name.c_str(), s.speeds_found, s.f_mech.size(),
+              s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
   for (double f : s.f_mech) std::printf(" %.4f", f);
   std::printf("\n");
 }

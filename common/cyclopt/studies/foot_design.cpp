@@ -143,7 +143,28 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   if (grid.size() >= 2) {
     ContinuationOptions co = o_.sweep.continuation;
     co.corrector.max_iterations = std::min(co.corrector.max_iterations, o_.sweep.corrector_max_iterations);
-    d.free_foot = continue_solution(walker_family(model, po, "speed"), best.z, grid, co);
+    const ParametricProblem family = walker_family(model, po, "speed");
+    d.free_foot = continue_solution(family, best.z, grid, co);
+    // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s);
+    // where the QPSQP run stopped, the rest of the grid is tried with the trivial predictor (warm
+    // starts at each grid speed) from the lowest converged point.
+    const CurvePoint* last = nullptr;
+    for (const CurvePoint& p : d.free_foot.points)
+      if (p.converged && (!last || p.parameter < last->parameter)) last = &p;
+    if (!d.free_foot.finished && last) {
+      std::vector<double> rest{last->parameter};
+      for (double v : grid)
+        if (v < last->parameter - 1e-12) rest.push_back(v);
+      if (rest.size() >= 2) {
+        ContinuationOptions trivial = co;
+        trivial.predictor = continuation::Predictor::trivial;
+        const Eigen::VectorXd x = last->x;
+        ContinuationResult more = continue_solution(family, x, rest, trivial);
+        d.free_foot.message += "; then the trivial predictor: " + more.message;
+        d.free_foot.finished = more.finished;
+        d.free_foot.points.insert(d.free_foot.points.end(), more.points.begin() + 1, more.points.end());
+      }
+    }
     for (const CurvePoint& p : d.free_foot.points) {
       if (!p.converged) continue;
       const walker::GaitProblem at(model, free_problem(p.parameter));

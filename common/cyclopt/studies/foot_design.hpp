@@ -8,7 +8,8 @@
 //      distinct optimum is classified (design_class.hpp: stilt, wheel, no rolling, admissible) and
 //      the best admissible one is the density's design;
 //   2. free-foot continuation: the design continued with QPSQP over the speed grid, downwards from
-//      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange);
+//      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange); where the
+//      QPSQP run stops, the rest of the grid with the trivial predictor (warm starts);
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
 //      speed reached (Fig. 10.2a green and blue).
 // The references, swept once with the same options: the start foot with its own masses (Table
