@@ -95,7 +95,6 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
     p.values["kkt_successes"] = r.successes;
     p.values["starts"] = job.starts;
     p.values["wall_seconds"] = r.wall_seconds;
-    p.values["x"] = std::vector<double>(o.x.data(), o.x.data() + o.x.size());
     ctx.store_point(p);
   }
 }

@@ -368,6 +368,14 @@ std::set<PointKey> ResultStore::stored_points(std::int64_t job_id) {
   return keys;
 }
 
+std::optional<std::string> ResultStore::point_values(std::int64_t job_id, PointKey key) {
+  std::lock_guard lock(mutex_);
+  Statement q(db_, "SELECT values_json FROM solutions WHERE job_id = ? AND curve_index = ? AND point_index = ?");
+  q.bind(1, job_id).bind(2, std::int64_t{key.curve_index}).bind(3, std::int64_t{key.point_index});
+  if (!q.step()) return std::nullopt;
+  return q.text(0);
+}
+
 std::vector<RequiredPoint> ResultStore::required_points(std::int64_t job_id) {
   std::lock_guard lock(mutex_);
   std::vector<RequiredPoint> points;

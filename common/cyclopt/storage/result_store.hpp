@@ -94,6 +94,8 @@ class ResultStore {
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
   std::set<PointKey> stored_points(std::int64_t job_id);
+  // The values_json of a stored point; nullopt if the job has no such point.
+  std::optional<std::string> point_values(std::int64_t job_id, PointKey key);
   // The stored points with required = 1 (solution_point.hpp), by curve and point index.
   std::vector<RequiredPoint> required_points(std::int64_t job_id);
   void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces
