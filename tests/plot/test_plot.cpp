@@ -57,6 +57,26 @@ TEST(NiceTicks, CoverTheRangeWithRoundSteps) {
       << step;
 }
 
+// Issue 17: a step length of 0.9818 to 0.9828 m was drawn as a steep line over the whole plot
+// (ticks 0.9818 ... 0.9828); the axis must span at least kMinRelativeSpan of the value.
+TEST(ValueRange, NearConstantValuesReadAsFlat) {
+  const std::vector<double> ys{0.9818, 0.9822, 0.9828};
+  const Range r = value_range(ys);
+  EXPECT_LE(r.lo, 0.9818);
+  EXPECT_GE(r.hi, 0.9828);
+  EXPECT_GE(r.hi - r.lo, 0.1 * 0.9828 - 1e-12);
+  EXPECT_NEAR(0.5 * (r.lo + r.hi), 0.9823, 1e-12);  // widened about the data, not shifted
+  const std::vector<double> t = nice_ticks(r, 6);
+  EXPECT_GE(t[1] - t[0], 0.01) << "ticks at the 0.1 mm scale of the variation";
+}
+
+TEST(ValueRange, VaryingValuesKeepTheirFittedRange) {
+  const std::vector<double> ys{0.2, 0.9, std::nan("")};  // non-finite values are ignored
+  const Range r = value_range(ys);
+  EXPECT_NEAR(r.lo, 0.2 - 0.05 * 0.7, 1e-12);
+  EXPECT_NEAR(r.hi, 0.9 + 0.05 * 0.7, 1e-12);
+}
+
 TEST(LineChart, PngHasRequestedSizeAndEveryCurveColour) {
   const fs::path p = out_dir() / "chart.png";
   render(two_curves(), p.string(), {800, 500});

@@ -64,6 +64,15 @@ Range data_range(const std::vector<double>& values, double pad) {
   return {lo - pad * w, hi + pad * w};
 }
 
+Range value_range(const std::vector<double>& values) {
+  const Range r = data_range(values, 0.05);
+  double magnitude = 0;
+  for (double v : values)
+    if (std::isfinite(v)) magnitude = std::max(magnitude, std::abs(v));
+  const double min_span = kMinRelativeSpan * magnitude;
+  return r.hi - r.lo < min_span ? widen_to(r, min_span) : r;
+}
+
 Axes::Axes(Canvas& canvas, Range x, Range y, const AxesStyle& style, bool equal_scale)
     : canvas_(canvas), style_(style) {
   left_ = 80;

@@ -21,6 +21,14 @@ std::vector<double> nice_ticks(Range r, int target = 6);
 // a degenerate or empty set gets a unit-width range around its value (or [0, 1]).
 Range data_range(const std::vector<double>& values, double pad = 0.0);
 
+// Share of the largest magnitude that a chart's value axis spans at least (value_range()).
+inline constexpr double kMinRelativeSpan = 0.1;
+
+// The range a chart's value (y) axis shows for `values`: data_range(values, 0.05), widened about
+// its middle to at least kMinRelativeSpan of the largest |value|, so a near-constant quantity
+// (a step length of 0.9818 to 0.9828 m) reads as the flat line it is, not as a steep one.
+Range value_range(const std::vector<double>& values);
+
 struct AxesStyle {
   std::string title;
   std::string x_label;  // with unit, e.g. "mean speed v (m/s)"

@@ -24,7 +24,7 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   }
   Canvas canvas(path, options.width, options.height);
   canvas.fill_background({1, 1, 1, 1});
-  Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(data_range(ys, 0.05)),
+  Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(value_range(ys)),
             chart.axes);
   axes.draw_grid();
   axes.clip_to_plot_area();

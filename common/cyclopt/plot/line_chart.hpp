@@ -21,7 +21,7 @@ struct Series {
 struct LineChart {
   AxesStyle axes;
   std::vector<Series> series;
-  std::optional<Range> x_range, y_range;  // default: fitted to the data
+  std::optional<Range> x_range, y_range;  // default: fitted to the data (y: value_range())
 };
 
 struct RenderOptions {
