@@ -15,9 +15,11 @@
 #include "cyclopt/service/stored_start.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
+#include "progress_line.hpp"
 #include "row_table.hpp"
 #include "service_client.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +28,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/ioctl.h>
+#include <unistd.h>
 
 namespace {
 
@@ -298,23 +303,28 @@ int exit_for_state(const std::string& state) {
   return state == "incomplete" ? cyclopt::cli::kExitIncomplete : kRejected;
 }
 
-std::string eta_text(double seconds) {
-  if (!std::isfinite(seconds)) return "?";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, seconds < 10 ? "%.1f s" : "%.0f s", seconds);
-  return buf;
+// Terminal width for the progress line (COLUMNS, else the terminal's, else 100).
+std::size_t terminal_width() {
+  if (const char* columns = std::getenv("COLUMNS"); columns && std::atoi(columns) > 20) return std::atoi(columns);
+  winsize w{};
+  if (ioctl(fileno(stderr), TIOCGWINSZ, &w) == 0 && w.ws_col > 20) return w.ws_col;
+  return 100;
 }
 
 int watch(Session& s, const Options& o, std::int64_t job_id) {
   const bool tty = isatty(fileno(stderr));
+  const std::size_t width = tty ? terminal_width() - 1 : 400;
+  cyclopt::client::LogThrottle log(std::chrono::seconds(5));
+  std::size_t shown = 0;  // characters of the line on the terminal
   auto bar = [&](const cyclopt_lcm::job_progress_t& p) {
-    const double pct = std::isfinite(p.percent) ? p.percent : 0.0;
-    const int filled = static_cast<int>(pct / 100.0 * 30);
-    std::fprintf(stderr, "%sjob %lld [%s%s] %5.1f%% %d/%d param %.6g objective %.6g ETA %s%s",
-                 tty ? "\r" : "", static_cast<long long>(p.job_id), std::string(filled, '#').c_str(),
-                 std::string(30 - filled, '.').c_str(), pct, p.points_done, p.points_total, p.parameter, p.objective,
-                 eta_text(p.eta_seconds).c_str(),
-                 tty ? "   " : "\n");
+    if (!tty && !log.due(p, std::chrono::steady_clock::now())) return;
+    const std::string line = cyclopt::client::progress_line(p, width);
+    if (tty) {
+      std::fprintf(stderr, "\r%s%s", line.c_str(), std::string(shown > line.size() ? shown - line.size() : 0, ' ').c_str());
+      shown = line.size();
+    } else {
+      std::fprintf(stderr, "%s\n", line.c_str());
+    }
   };
   const auto done = s.remote().watch(job_id, bar, o.watch_timeout);
   if (tty) std::fputc('\n', stderr);

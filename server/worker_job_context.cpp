@@ -121,10 +121,16 @@ void WorkerJobContext::publish(const service::ProgressReport& r) {
   m.points_total = r.points_total >= 0 ? r.points_total : points_total_;
   m.percent = m.points_total > 0 ? 100.0 * m.points_done / m.points_total : std::numeric_limits<double>::quiet_NaN();
   const int solved_now = m.points_done - points_at_start_;
-  m.eta_seconds = solved_now > 0 && m.points_total > 0
+  m.eta_seconds = std::isfinite(r.eta_seconds) ? r.eta_seconds
+                 : solved_now > 0 && m.points_total > 0
                       ? elapsed_seconds() / solved_now * (m.points_total - m.points_done)
                       : std::numeric_limits<double>::quiet_NaN();
   m.message = r.message;
+  m.phase = r.phase;
+  m.phase_done = r.phase_done;
+  m.phase_total = r.phase_total;
+  m.best_objective = r.best_objective;
+  m.elapsed_seconds = job_.run_seconds + elapsed_seconds();
   publish_seconds_ += publisher_.publish(channels::kProgress, m);
 }
 

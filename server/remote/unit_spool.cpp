@@ -231,7 +231,12 @@ void UnitSpool::write_progress(const service::ProgressReport& r) const {
                          {"curve_id", r.curve_id},
                          {"points_done", r.points_done},
                          {"points_total", r.points_total},
-                         {"message", r.message}};
+                         {"message", r.message},
+                         {"phase", r.phase},
+                         {"phase_done", r.phase_done},
+                         {"phase_total", r.phase_total},
+                         {"best_objective", r.best_objective},
+                         {"eta_seconds", r.eta_seconds}};
   write_file_atomically(dir_ / "progress.json", j.dump());
 }
 
@@ -249,6 +254,11 @@ std::optional<service::ProgressReport> UnitSpool::read_progress() const {
     r.points_done = j.at("points_done").get<int>();
     r.points_total = j.at("points_total").get<int>();
     r.message = j.at("message").get<std::string>();
+    r.phase = j.at("phase").get<std::string>();
+    r.phase_done = j.at("phase_done").get<int>();
+    r.phase_total = j.at("phase_total").get<int>();
+    r.best_objective = number_or_nan(j, "best_objective");
+    r.eta_seconds = number_or_nan(j, "eta_seconds");
     return r;
   } catch (const std::exception&) {
     return std::nullopt;  // progress is advisory: a malformed report is skipped

@@ -215,6 +215,36 @@ TEST_F(WalkerFigures, StroboscopeShowsGroundContactPointsFeetAndClearance) {
   EXPECT_GT(img.count({0.35, 0.25, 0.15, 1}, 0.1), 500) << "ground";
 }
 
+// Issue 17: the stroboscope drew every frame of a step on the same spot (feet stacked on one place)
+// and left half the picture empty beside the walker. As in Fig. 9.2 the poses now stand side by
+// side along x, each with its own feet, and the drawing fills the picture's width.
+TEST_F(WalkerFigures, StroboscopePosesStandSideBySideAndFillThePicture) {
+  const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(2, *hmt_))};
+  const Figure f = walker_figure("stroboscope", jobs, 1.2);
+  const Scene& s = std::get<Scene>(f.drawing);
+  // Solid shapes come five per frame (torso, stance leg, swing leg, two feet); the dashed
+  // clearance paths follow each step's frames.
+  std::vector<std::array<double, 2>> frame_x;  // x extent of each frame's drawing
+  int in_frame = 0;
+  for (const Shape& sh : s.shapes) {
+    if (sh.dashed) continue;
+    if (in_frame++ % 5 == 0) frame_x.push_back({1e9, -1e9});
+    for (const auto& p : sh.points) frame_x.back() = {std::min(frame_x.back()[0], p[0]), std::max(frame_x.back()[1], p[0])};
+  }
+  ASSERT_EQ(frame_x.size(), 13u);
+  for (std::size_t n = 1; n < frame_x.size(); ++n) {
+    EXPECT_LT(frame_x[n - 1][1], frame_x[n][0]) << "frame " << n << " overlaps frame " << n - 1;
+    EXPECT_LT(s.markers[2 * (n - 1)].x, s.markers[2 * n].x) << "contact point of frame " << n;
+  }
+  const std::vector<std::string> paths = write_figure(f, (out_dir() / "stroboscope_spread").string());
+  const testing::PngImage img = testing::inspect_png(paths[0]);
+  EXPECT_EQ(img.width, static_cast<int>(f.options.width));
+  // The contact points on the ground (the lower half, below the legend) run across the picture.
+  const std::array<int, 2> contacts = img.columns_of({0.84, 0.15, 0.16, 1}, img.height / 2, img.height, 0.1);
+  ASSERT_GE(contacts[0], 0) << "no contact point drawn";
+  EXPECT_GT(contacts[1] - contacts[0], 0.6 * img.width) << "columns " << contacts[0] << " to " << contacts[1];
+}
+
 TEST_F(WalkerFigures, UnknownKindsAndPointFeetFootFigureAreRejected) {
   const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(1, *point_feet_))};
   EXPECT_THROW(walker_figure("pie", jobs), std::invalid_argument);

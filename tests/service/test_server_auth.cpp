@@ -128,7 +128,7 @@ TEST_F(ServerAuth, ClientsBelieveOnlyMessagesSignedWithTheirKey) {
   rogue.publish(channels::kDone, fake_done);
   rogue.publish(channels::kDone, fake_done, &key("bob"));
   cyclopt_lcm::job_progress_t fake_progress{ack->job_id, "alice-w", "foot_sweep", 0, 0, 0, 0, 0, 0, 99, 100, 99.0, 0,
-                                            "forged"};
+                                            "forged", "", -1, -1, 0, 0};
   rogue.publish(channels::kProgress, fake_progress);
   int forged_progress = 0, real_progress = 0;
   const auto done = alice.watch(ack->job_id, [&](const cyclopt_lcm::job_progress_t& p) {

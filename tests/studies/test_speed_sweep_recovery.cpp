@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
@@ -22,6 +25,8 @@ TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
   o.speeds = {0.6, 0.7, 0.8, 0.9};
   o.seed_speeds = {0.6};
   o.starts = 2;
+  std::vector<SweepProgress> reports;  // on_progress is called one at a time
+  o.on_progress = [&](const SweepProgress& p) { reports.push_back(p); };
   const SpeedSweepResult r = speed_sweep(model, problem, o);
   for (const ContinuationResult& run : r.runs)
     std::printf("run %.3f -> %.3f (curve %d): %s\n", run.points.front().parameter, run.points.back().parameter,
@@ -50,4 +55,39 @@ TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
   }
   EXPECT_GE(recovered, 1);
   EXPECT_FALSE(r.recoveries.empty());
+
+  // Progress (sweep_progress.hpp): the phases in the order run, the multistart counted solve by
+  // solve, grid speeds reached never decreasing up to all four, an ETA once a rate is measured.
+  ASSERT_FALSE(reports.empty());
+  EXPECT_EQ(reports.front().phase, SweepPhase::multistart);
+  EXPECT_EQ(reports.front().phase_total, o.starts);
+  int multistart_solves = 0, phase_changes = 0, last_reached = 0;
+  bool saw_continuation = false, saw_recovery = false, eta_measured = false;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const SweepProgress& p = reports[i];
+    EXPECT_EQ(p.speeds_total, 4);
+    EXPECT_GE(p.speeds_reached, last_reached) << i;
+    last_reached = p.speeds_reached;
+    if (p.phase_total > 0) {
+      EXPECT_LE(p.phase_done, p.phase_total) << i << " " << p.detail;
+    }
+    if (p.phase == SweepPhase::multistart && !saw_continuation) multistart_solves = std::max(multistart_solves, p.phase_done);
+    saw_continuation = saw_continuation || p.phase == SweepPhase::continuation;
+    saw_recovery = saw_recovery || p.phase == SweepPhase::recovery;
+    if (p.phase == SweepPhase::recovery) {
+      EXPECT_TRUE(saw_continuation) << "recovery before any continuation";
+    }
+    if (i > 0 && (p.phase != reports[i - 1].phase || p.detail != reports[i - 1].detail)) ++phase_changes;
+    if (std::isfinite(p.eta_seconds)) {
+      EXPECT_GE(p.eta_seconds, 0.0) << i;
+      eta_measured = true;
+    }
+  }
+  EXPECT_EQ(multistart_solves, o.starts);
+  EXPECT_TRUE(saw_continuation);
+  EXPECT_TRUE(saw_recovery);
+  EXPECT_TRUE(eta_measured);
+  EXPECT_GE(phase_changes, 3);
+  EXPECT_EQ(last_reached, 4);
+  std::printf("%zu progress reports, %d phase changes\n", reports.size(), phase_changes);
 }

@@ -64,7 +64,8 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
   std::atomic<int> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  std::mutex finished_mutex;  // on_run_finished is called one at a time
+  std::mutex finished_mutex;  // on_run_finished and on_progress are called one at a time
+  int runs_done = 0;
   auto worker = [&] {
     try {
       const std::unique_ptr<Problem> problem = make_problem();
@@ -75,15 +76,12 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
           run.message = "not started: stopped by should_stop";
           continue;
         }
-        if (std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt) {
-          run = std::move(*recorded);
-          continue;
-        }
-        run = solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
-        if (options.on_run_finished && run.termination != Termination::user_stop) {
-          const std::lock_guard<std::mutex> lock(finished_mutex);
-          options.on_run_finished(i, run);
-        }
+        std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt;
+        run = recorded ? std::move(*recorded) : solve(*problem, options.solver, result.starts[static_cast<size_t>(i)]);
+        if (run.termination == Termination::user_stop) continue;
+        const std::lock_guard<std::mutex> lock(finished_mutex);
+        if (options.on_run_finished && !recorded) options.on_run_finished(i, run);
+        if (options.on_progress) options.on_progress(++runs_done, run);
       }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(failure_mutex);

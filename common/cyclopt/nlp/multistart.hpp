@@ -36,6 +36,9 @@ struct MultistartOptions {
   // should_stop) is passed to on_run_finished(i, run), one call at a time, from worker threads.
   std::function<std::optional<SolverSummary>(int)> recorded_run;
   std::function<void(int, const SolverSummary&)> on_run_finished;
+  // Progress: after every run taken (solved to the end, or recorded_run), with the number of runs
+  // taken so far and the run; one call at a time, from worker threads.
+  std::function<void(int runs_done, const SolverSummary& run)> on_progress;
 };
 
 // One distinct local optimum found by the successful runs.

@@ -4,7 +4,10 @@
 #include "cyclopt/plot/walker_pose.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <set>
 #include <stdexcept>
 
 namespace cyclopt::plot {
@@ -30,6 +33,19 @@ std::vector<Xz> shifted(std::vector<Xz> pts, double dx) {
   return pts;
 }
 
+// Gap between the rightmost point of one drawn pose and the leftmost of the next (m).
+constexpr double kPoseGap = 0.04;
+
+// Leftmost and rightmost x of everything drawn for one pose.
+std::array<double, 2> x_extent(const WalkerPose& p) {
+  std::array<double, 2> e{p.contact[0], p.contact[0]};
+  auto add = [&e](const Xz& q) { e = {std::min(e[0], q[0]), std::max(e[1], q[0])}; };
+  for (const Xz& q : {p.torso_tip, p.hip, p.knee1, p.knee2, p.ankle1, p.ankle2}) add(q);
+  for (const std::vector<Xz>* foot : {&p.foot1, &p.foot2})
+    for (const Xz& q : *foot) add(q);
+  return e;
+}
+
 std::string leg_label(const Color& c) {
   return c.b == kLegA.b ? "leg A (stance in steps 1, 3, ...)" : "leg B (stance in steps 2, 4, ...)";
 }
@@ -43,6 +59,9 @@ std::string fixed(double v, int digits) {
 }  // namespace
 
 Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, const StroboscopeOptions& o) {
+  if (o.steps < 1 || o.frames_per_step < 1)
+    throw std::invalid_argument("gait stroboscope: steps (" + std::to_string(o.steps) + ") and frames_per_step (" +
+                                std::to_string(o.frames_per_step) + ") must be >= 1");
   if (!point.trajectory) throw std::invalid_argument("gait stroboscope: the point has no stored trajectory");
   const walker::WalkerModel<double> model = job.job.model();
   const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.job.foot) : std::vector<Xz>{};
@@ -62,14 +81,33 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
                 "x (m)", "z (m)", false};
   scene.ground_z = 0.0;
   scene.pad = 0.04;
-  scene.legend_room = 380;  // the legend beside the walker, not over the torsos
   const double peak_clearance = *std::max_element(swing_z.begin(), swing_z.end());
+  // Fig. 9.2 draws consecutive poses side by side: frame f of step k stands at its place in the
+  // walk (k step lengths on) plus spread[k][f] >= the previous frame's, just far enough right that
+  // it clears the previous pose. Frame 0 of step k > 0 is the last frame of step k - 1.
+  std::vector<std::vector<WalkerPose>> poses(static_cast<std::size_t>(o.steps));
+  std::vector<std::vector<double>> spread(static_cast<std::size_t>(o.steps));
+  double previous_right = -std::numeric_limits<double>::infinity(), extra = 0;
+  for (std::size_t k = 0; k < poses.size(); ++k)
+    for (int f = 0; f <= o.frames_per_step; ++f) {
+      poses[k].push_back(walker_pose(model, q_at(tr, f * dt), outline));
+      if (k > 0 && f == 0) {
+        spread[k].push_back(spread[k - 1].back());
+        continue;
+      }
+      const std::array<double, 2> e = x_extent(poses[k].back());
+      const double at = static_cast<double>(k) * step;
+      extra = std::max(extra, previous_right + kPoseGap - (at + e[0]));
+      spread[k].push_back(extra);
+      previous_right = at + extra + e[1];
+    }
   for (int k = 0; k < o.steps; ++k) {
-    const double dx = k * step;
+    const std::size_t ks = static_cast<std::size_t>(k);
     // Leg "A" is the stance leg of even steps; the legs swap roles at every impact.
     const Color stance = k % 2 == 0 ? kLegA : kLegB, swing = k % 2 == 0 ? kLegB : kLegA;
     for (int f = k == 0 ? 0 : 1; f <= o.frames_per_step; ++f) {
-      const WalkerPose p = walker_pose(model, q_at(tr, f * dt), outline);
+      const WalkerPose& p = poses[ks][static_cast<std::size_t>(f)];
+      const double dx = k * step + spread[ks][static_cast<std::size_t>(f)];
       const double fade = 0.35 + 0.65 * (k * o.frames_per_step + f) / double(o.steps * o.frames_per_step);
       auto faded = [fade](Color c) { return Color{c.r, c.g, c.b, fade}; };
       // Legends on the last, fully opaque frame (the legend takes the first labelled shape's colour).
@@ -87,11 +125,28 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
       scene.markers.push_back({p.contact[0] + dx, p.contact[1], kContact, 4.5, "rolling contact point C1 (every frame)"});
       scene.markers.push_back({p.hip[0] + dx, p.hip[1], kTorso, 3.0, ""});
     }
+    // The swing foot's path, spread with the frames: between two frames its shift is interpolated
+    // in time, so it passes through every drawn swing foot.
     Shape clearance{{}, kClearance, 1.8, true, false, std::nullopt,
                     "swing-foot lowest point C2 (peak clearance " + fixed(peak_clearance * 100, 1) + " cm)"};
-    for (std::size_t i = 0; i < swing_x.size(); ++i) clearance.points.push_back({swing_x[i] + dx, swing_z[i]});
+    for (std::size_t i = 0; i < swing_x.size(); ++i) {
+      const double s_f = std::clamp(tr.time[i] / dt, 0.0, double(o.frames_per_step));
+      const std::size_t f0 = std::min(static_cast<std::size_t>(s_f), static_cast<std::size_t>(o.frames_per_step - 1));
+      const double w = s_f - static_cast<double>(f0);
+      const double extra_i = (1 - w) * spread[ks][f0] + w * spread[ks][f0 + 1];
+      clearance.points.push_back({swing_x[i] + k * step + extra_i, swing_z[i]});
+    }
     scene.shapes.push_back(std::move(clearance));
   }
+  scene.axes.x_label = "x (m); each pose moved right by its spread (the last by " +
+                       fixed(spread.back().back(), 2) + " m) so the poses stand side by side";
+  // The legend above the figures, which now fill the width: one 18 px row per entry, box and margins.
+  std::set<std::string> entries;
+  for (const Shape& sh : scene.shapes)
+    if (!sh.legend.empty()) entries.insert(sh.legend);
+  for (const Marker& m : scene.markers)
+    if (!m.legend.empty()) entries.insert(m.legend);
+  scene.legend_headroom = 18.0 * static_cast<double>(entries.size()) + 8 + 16;
   return scene;
 }
 

@@ -36,12 +36,21 @@ void content(const Scene& scene, std::vector<double>& xs, std::vector<double>& z
   if (scene.ground_z) zs.push_back(*scene.ground_z);
 }
 
-// The padded x range widened to the right by legend_room pixels at the scale that fits the z range
-// into a canvas of `height` (Axes margins: 48 + 62 px vertically with a title, 80 + 24 horizontally).
-Range x_range_of(const Scene& scene, const std::vector<double>& xs, Range z, double height) {
-  Range x = data_range(xs, scene.pad);
-  x.hi += scene.legend_room * (z.hi - z.lo) / (height - 110);
-  return x;
+// Margins Axes keeps around the plot area (with a title): 80 + 24 px across, 48 + 62 px down.
+constexpr double kMarginsX = 104, kMarginsZ = 110;
+
+// The plot area's data ranges on a canvas of w x h: the padded content at the largest equal scale
+// (px/m) that fits it beside legend_room and under legend_headroom, those pixels added as metres.
+struct Layout {
+  Range x, z;
+};
+Layout layout(const Scene& scene, const std::vector<double>& xs, const std::vector<double>& zs, double w, double h) {
+  Layout l{data_range(xs, scene.pad), data_range(zs, scene.pad)};
+  const double scale = std::min((w - kMarginsX - scene.legend_room) / (l.x.hi - l.x.lo),
+                                (h - kMarginsZ - scene.legend_headroom) / (l.z.hi - l.z.lo));
+  l.x.hi += scene.legend_room / scale;
+  l.z.hi += scene.legend_headroom / scale;
+  return l;
 }
 
 }  // namespace
@@ -49,9 +58,11 @@ Range x_range_of(const Scene& scene, const std::vector<double>& xs, Range z, dou
 RenderOptions fitted_options(const Scene& scene, double height, double min_width, double max_width) {
   std::vector<double> xs, zs;
   content(scene, xs, zs);
-  const Range z = data_range(zs, scene.pad), x = x_range_of(scene, xs, z, height);
-  const double width = 104 + (height - 110) * (x.hi - x.lo) / (z.hi - z.lo);
-  return {std::clamp(width, min_width, max_width), height};
+  const Range x = data_range(xs, scene.pad), z = data_range(zs, scene.pad);
+  const double fixed_x = kMarginsX + scene.legend_room, fixed_z = kMarginsZ + scene.legend_headroom;
+  const double width = fixed_x + (height - fixed_z) * (x.hi - x.lo) / (z.hi - z.lo);
+  if (width <= max_width) return {std::max(width, min_width), height};
+  return {max_width, fixed_z + (max_width - fixed_x) * (z.hi - z.lo) / (x.hi - x.lo)};
 }
 
 void render(const Scene& scene, const std::string& path, const RenderOptions& options) {
@@ -60,8 +71,8 @@ void render(const Scene& scene, const std::string& path, const RenderOptions& op
   if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
   Canvas canvas(path, options.width, options.height);
   canvas.fill_background({1, 1, 1, 1});
-  const Range z = data_range(zs, scene.pad);
-  Axes axes(canvas, x_range_of(scene, xs, z, options.height), z, scene.axes, /*equal_scale=*/true);
+  const Layout l = layout(scene, xs, zs, options.width, options.height);
+  Axes axes(canvas, l.x, l.z, scene.axes, /*equal_scale=*/true);
   axes.draw_grid();
   axes.clip_to_plot_area();
   if (scene.ground_z) {

@@ -36,10 +36,12 @@ struct Scene {
   std::optional<double> ground_z;  // draws the ground line and hatching at this height
   double pad = 0.05;               // margin around the content, fraction of its size
   double legend_room = 0;          // pixels kept empty right of the content for the legend
+  double legend_headroom = 0;      // pixels kept empty above the content for the legend
 };
 
-// Options of `height` pixels whose width gives the scene's content (with its pad) the plot area's
-// aspect ratio, so equal scales waste no space; the width is kept within [min_width, max_width].
+// Options whose size gives the scene's content (with its pad and legend room) the plot area's
+// aspect ratio, so equal scales waste no space: `height` pixels high, or, where that would be wider
+// than max_width, max_width wide and as high as the content then needs; at least min_width wide.
 RenderOptions fitted_options(const Scene& scene, double height, double min_width = 600, double max_width = 1800);
 
 // Writes the scene to `path` (.png, .svg or .pdf); throws std::invalid_argument for an empty scene.

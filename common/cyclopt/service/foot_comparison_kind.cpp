@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -119,6 +120,8 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   ctx.add_curve(feet + 1, "mean f_mech per foot", "curve");
   std::vector<std::vector<storage::SolutionPoint>> stored(static_cast<std::size_t>(feet));
   std::atomic<std::size_t> running = 0;  // the foot being swept (read by multistart workers too)
+  const auto started = std::chrono::steady_clock::now();
+  std::atomic<double> feet_seconds = 0.0;  // of the feet swept
   const auto on_foot = [&](std::size_t k, const studies::FootSweepSummary& s, const studies::SpeedSweepResult&) {
     const studies::ParametricProblem family = studies::walker_family(compared[k].model, job.walker.problem, "speed");
     for (int i = 0; i < speeds; ++i) {
@@ -136,16 +139,26 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       stored[k].push_back(std::move(p));
     }
     running = std::min(k + 1, compared.size() - 1);
+    feet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return ctx.stop_reason() == StopReason::none;
   };
-  // Progress names the foot being swept; the corrector reports on the job's thread (multistart
-  // workers only honour stop requests).
-  std::vector<IterationCallback> progress;
-  for (int k = 0; k < feet; ++k)
-    progress.push_back(solver_progress(ctx, {.curve_id = 1 + k, .points_done = k * speeds, .points_total = feet * speeds,
-                                             .message = "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) +
-                                                        " " + job.names[static_cast<std::size_t>(k)]}));
-  o.sweep.continuation.corrector.on_iteration = [&](const nlp::IterationReport& it) { return progress[running](it); };
+  // Progress names the foot being swept and the phase of its sweep; the ETA is that sweep's plus
+  // the feet still to sweep at the mean time of the feet swept so far.
+  PhaseProgress progress(ctx, {.curve_id = 1, .points_total = feet * speeds});
+  o.sweep.continuation.corrector.on_iteration = progress.iterations();
+  o.sweep.on_progress = [&](const studies::SweepProgress& sp) {
+    const std::size_t k = running;
+    ProgressReport r = sweep_progress_report(
+        sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " + job.names[k]);
+    r.curve_id = 1 + static_cast<int>(k);
+    r.points_done = static_cast<int>(k) * speeds + sp.speeds_reached;
+    r.points_total = feet * speeds;
+    const double per_foot =
+        k > 0 ? feet_seconds / static_cast<double>(k)
+              : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + sp.eta_seconds;
+    r.eta_seconds = sp.eta_seconds + static_cast<double>(feet - 1 - static_cast<int>(k)) * per_foot;
+    progress.set(r);
+  };
   const auto on_point = [&](std::size_t k, const continuation::CurvePoint&) {
     running = k;
     return ctx.stop_reason() == StopReason::none;

@@ -16,7 +16,15 @@ struct ProgressReport {
   int curve_id = -1;
   int points_done = 0;                 // points stored so far, including ones from earlier attempts
   int points_total = -1;               // -1: unknown
-  std::string message;
+  std::string message{};
+  // The phase of the job ("multistart at 1.3 m/s", "continuation run 2 from 1.3 m/s upwards,
+  // curve 0") and how far it is, the best objective found so far, and the kind's own ETA from
+  // measured rates (NaN: the context estimates it from points_done).
+  std::string phase{};
+  int phase_done = -1;
+  int phase_total = -1;
+  double best_objective = kNaN;
+  double eta_seconds = kNaN;
 };
 
 }  // namespace cyclopt::service

@@ -6,8 +6,11 @@
 #include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/service/progress_report.hpp"
+#include "cyclopt/studies/sweep_progress.hpp"
 
 #include <functional>
+#include <mutex>
+#include <utility>
 
 namespace cyclopt::service {
 
@@ -17,6 +20,26 @@ using IterationCallback = std::function<bool(const nlp::IterationReport&)>;
 // (parameter, curve, points done/total, message); the callback fills in iteration, objective and
 // constraint violation. The callback holds a reference to ctx.
 IterationCallback solver_progress(JobContext& ctx, ProgressReport where);
+
+// A job that goes through phases (a sweep's multistart batches, continuation runs, recoveries):
+// set() replaces the phase and publishes it at once, iterations() reports every solver iteration
+// on top of the current phase (job's own thread, as solver_progress). set() may be called from
+// any thread; calls to ctx are serialised.
+class PhaseProgress {
+ public:
+  PhaseProgress(JobContext& ctx, ProgressReport where) : ctx_(ctx), where_(std::move(where)) {}
+  void set(const ProgressReport& where);
+  IterationCallback iterations();
+
+ private:
+  JobContext& ctx_;
+  std::mutex mutex_;
+  ProgressReport where_;
+};
+
+// A speed sweep's progress (studies/sweep_progress.hpp) as the job's: points are the grid speeds
+// reached, the phase and its ETA as the sweep measured them.
+ProgressReport sweep_progress_report(const studies::SweepProgress& progress, std::string message);
 
 // For solves on other threads (nlp::multistart's workers), where JobContext's counting and
 // reporting may not be called: only honours stop requests.

@@ -151,7 +151,9 @@ void run_sweep(const ContinuationJob& job, JobContext& ctx) {
   so.seed = job.walker.seed;
   so.scale = job.walker.scale;
   so.continuation = job.options;
-  so.continuation.corrector.on_iteration = solver_progress(ctx, {.points_total = -1, .message = "speed sweep"});
+  PhaseProgress progress(ctx, {.points_total = static_cast<int>(so.speeds.size()), .message = "speed sweep"});
+  so.continuation.corrector.on_iteration = progress.iterations();
+  so.on_progress = [&](const studies::SweepProgress& p) { progress.set(sweep_progress_report(p, "speed sweep")); };
   so.continuation.corrector.should_stop = stop_predicate(ctx);
   so.journal = sweep_journal(ctx);  // a resumed sweep reuses what an earlier attempt finished
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");

@@ -9,7 +9,9 @@
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <mutex>
 
 namespace cyclopt::service {
 
@@ -73,8 +75,20 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
   mo.solver.should_stop = stop_predicate(ctx);
   const studies::SweepJournal journal = sweep_journal(ctx);
   studies::journal_multistart(mo, journal, 0);
-  ctx.report_progress({.parameter = v, .curve_id = 0, .points_total = -1,
-                       .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s"});
+  ProgressReport where{.parameter = v, .curve_id = 0, .points_total = -1,
+                       .message = std::to_string(job.starts) + " starts at v = " + std::to_string(v) + " m/s",
+                       .phase = "multistart", .phase_done = 0, .phase_total = job.starts};
+  ctx.report_progress(where);
+  const auto started = std::chrono::steady_clock::now();
+  std::mutex progress_mutex;
+  mo.on_progress = [&](int done, const nlp::SolverSummary& run) {  // from the multistart's workers
+    const std::lock_guard lock(progress_mutex);
+    where.phase_done = done;
+    if (run.success() && !(run.objective >= where.best_objective)) where.best_objective = run.objective;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    where.eta_seconds = seconds / done * (job.starts - done);  // runs taken from checkpoints make it optimistic
+    ctx.report_progress(where);
+  };
   const nlp::MultistartResult r = nlp::multistart(
       [&] { return std::make_unique<walker::GaitProblem>(model, po); },
       [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, centre, job.scale, rng)); }, mo);

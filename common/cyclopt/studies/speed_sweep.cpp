@@ -12,6 +12,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 
@@ -68,6 +69,11 @@ class Sweep {
   std::optional<Target> next_target();
   void recover(const Target& target);
   void select_best();
+  void begin_phase(SweepPhase phase, std::string detail, int total);
+  void report();  // o_.on_progress of the current state; callers hold progress_mutex_
+  double eta_seconds() const;
+  // A converged point: marks its grid speed reached; `step`: it is the running run's next point.
+  void reached(const CurvePoint& p, bool step);
 
   const walker::WalkerModel<double>& model_;
   const walker::GaitProblemOptions& problem_;
@@ -82,7 +88,61 @@ class Sweep {
   std::map<std::size_t, std::string> failures_;  // per grid speed: what recovery tried
   int batches_ = 0;                             // multistart batches begun (journal keys)
   int runs_begun_ = 0;                          // continuation runs begun (journal keys)
+
+  // Progress (sweep_progress.hpp); the mutex serialises reports from multistart workers.
+  std::mutex progress_mutex_;
+  SweepProgress progress_;
+  std::vector<bool> reached_;                    // per grid speed: a converged point on some curve
+  int seed_batches_left_ = 0;                   // seed speeds whose multistart has not begun
+  int computed_solves_ = 0;                     // multistart solves finished in this attempt (not resumed)
+  double multistart_wall_ = 0.0;                // of finished batches
+  Clock::time_point batch_start_;
+  double continuation_wall_ = 0.0;              // of finished runs
+  int recoveries_left_ = 0;                     // unreached speeds not tried yet (in recovery)
 };
+
+void Sweep::begin_phase(SweepPhase phase, std::string detail, int total) {
+  const std::lock_guard lock(progress_mutex_);
+  progress_.phase = phase;
+  progress_.detail = std::move(detail);
+  progress_.phase_done = 0;
+  progress_.phase_total = total;
+  if (phase == SweepPhase::multistart) progress_.best_objective = SweepProgress::kNaN;
+  report();
+}
+
+void Sweep::reached(const CurvePoint& p, bool step) {
+  const std::lock_guard lock(progress_mutex_);
+  if (step && p.on_grid) ++progress_.phase_done;  // grid speeds passed by this run
+  for (std::size_t i = 0; i < o_.speeds.size(); ++i)
+    if (same_speed(o_.speeds[i], p.parameter) && !reached_[i]) {
+      reached_[i] = true;
+      ++progress_.speeds_reached;
+    }
+  if (!(p.objective >= progress_.best_objective)) progress_.best_objective = p.objective;
+  report();
+}
+
+double Sweep::eta_seconds() const {
+  const double batch_wall = progress_.phase == SweepPhase::multistart ? seconds_since(batch_start_) : 0.0;
+  const double solve_rate = computed_solves_ > 0 ? (multistart_wall_ + batch_wall) / computed_solves_ : SweepProgress::kNaN;
+  const int unreached = progress_.speeds_total - progress_.speeds_reached;
+  if (progress_.phase == SweepPhase::recovery) {
+    const int done = static_cast<int>(r_.recoveries.size());
+    const double per_target = done > 0 ? r_.recovery_seconds / done : o_.starts * solve_rate;
+    return recoveries_left_ * per_target;
+  }
+  const int batch_left = progress_.phase == SweepPhase::multistart ? progress_.phase_total - progress_.phase_done : 0;
+  const double speed_rate = progress_.speeds_reached > 0 && continuation_wall_ > 0.0
+                                ? continuation_wall_ / progress_.speeds_reached : solve_rate;
+  return (seed_batches_left_ * o_.starts + batch_left) * solve_rate + unreached * speed_rate;
+}
+
+void Sweep::report() {
+  if (!o_.on_progress) return;
+  progress_.eta_seconds = eta_seconds();
+  o_.on_progress(progress_);
+}
 
 nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts) {
   const walker::GaitProblemOptions po = at_speed(v);
@@ -95,12 +155,30 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
   std::atomic<int> resumed{0};
   journal_multistart(mo, o_.journal, batch, &resumed);
   const int n = static_cast<int>(starts.size());
+  {
+    const std::lock_guard lock(progress_mutex_);
+    progress_.phase_total = n;
+    batch_start_ = Clock::now();
+  }
+  const int computed_before = computed_solves_;
+  mo.on_progress = [&](int done, const nlp::SolverSummary& run) {
+    const std::lock_guard lock(progress_mutex_);
+    progress_.phase_done = done;
+    computed_solves_ = computed_before + done - resumed;
+    if (run.success() && !(run.objective >= progress_.best_objective)) progress_.best_objective = run.objective;
+    report();
+  };
   const std::clock_t cpu = std::clock();
   nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
                                             std::move(starts), mo);
   r_.multistart_solves += n - resumed;
   r_.resumed_solves += resumed;
   r_.multistart_seconds += m.wall_seconds;
+  {
+    const std::lock_guard lock(progress_mutex_);
+    multistart_wall_ += m.wall_seconds;
+    batch_start_ = Clock::now();  // the batch's wall is in multistart_wall_ now
+  }
   r_.multistart_cpu_seconds += static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
   return m;
 }
@@ -161,6 +239,11 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     if ((v - t.speed) * t.direction > 1e-12) grid.push_back(v);
   if (t.direction < 0) std::sort(grid.begin() + 1, grid.end(), std::greater<>());
   if (grid.size() < 2) return;
+  const Clock::time_point run_start = Clock::now();
+  char detail[96];
+  std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
+                t.direction > 0 ? "upwards" : "downwards", t.curve_id);
+  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
   bool repeated = !t.report_start;
   std::optional<double> superseded;  // a recovery run stopped here: another curve is as good
   std::optional<double> merged;      // the run stopped here: it joined an earlier run's curve
@@ -171,6 +254,7 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
       stopped_ = true;
       return false;
     }
+    if (!skip && p.converged) reached(p, true);
     if (skip || !p.converged || !p.on_grid) return true;
     // An earlier run followed this curve from here on already (both directions are continued
     // from every start and every curve jumped to): HMT P2's runs from 1.3, 1.5 and 2.3 m/s
@@ -205,7 +289,11 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
     ++r_.computed_runs;
     computed = true;
+    const std::lock_guard lock(progress_mutex_);
+    continuation_wall_ += seconds_since(run_start);
   }
+  for (const CurvePoint& p : run.points)  // the start point too, which the callback may skip
+    if (p.converged) reached(p, false);
   for (int c = first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
@@ -281,6 +369,11 @@ std::optional<Target> Sweep::next_target() {
 void Sweep::recover(const Target& target) {
   const Clock::time_point t0 = Clock::now();
   const double v = o_.speeds[target.index];
+  recoveries_left_ = 0;
+  for (std::size_t i = 0; i < o_.speeds.size(); ++i) recoveries_left_ += !r_.best[i].found && !unreached_tried_[i];
+  char detail[64];
+  std::snprintf(detail, sizeof detail, "at %.4g m/s (%s)", v, target.unreached ? "unreached" : "dominated?");
+  begin_phase(SweepPhase::recovery, detail, -1);
   RecoveryAttempt a;
   a.speed = v;
   a.trigger = target.unreached ? "unreached"
@@ -375,13 +468,23 @@ SpeedSweepResult Sweep::run() {
   const std::size_t n = o_.speeds.size();
   seeded_.assign(n, false);
   unreached_tried_.assign(n, false);
+  reached_.assign(n, false);
+  progress_.speeds_total = static_cast<int>(n);
+  std::vector<std::size_t> seeds;  // distinct grid indices nearest to the seed speeds
   for (double s : o_.seed_speeds) {
     const std::size_t i = static_cast<std::size_t>(
         std::min_element(o_.speeds.begin(), o_.speeds.end(), [s](double a, double b) { return std::abs(a - s) < std::abs(b - s); }) -
         o_.speeds.begin());
+    if (std::find(seeds.begin(), seeds.end(), i) == seeds.end()) seeds.push_back(i);
+  }
+  seed_batches_left_ = static_cast<int>(seeds.size());
+  for (const std::size_t i : seeds) {
     const double v = o_.speeds[i];
-    if (seeded_[i]) continue;
     seeded_[i] = true;
+    --seed_batches_left_;
+    char detail[32];
+    std::snprintf(detail, sizeof detail, "at %.4g m/s", v);
+    begin_phase(SweepPhase::multistart, detail, o_.starts);
     const std::optional<Eigen::VectorXd> x = gait_multistart_at(v);
     if (!x) continue;
     nlp::Evaluation e;
@@ -408,6 +511,15 @@ SpeedSweepResult Sweep::run() {
 }
 
 }  // namespace
+
+const char* to_string(SweepPhase phase) {
+  switch (phase) {
+    case SweepPhase::multistart: return "multistart";
+    case SweepPhase::continuation: return "continuation";
+    case SweepPhase::recovery: return "recovery";
+  }
+  return "?";
+}
 
 const char* to_string(SweepStep step) {
   switch (step) {

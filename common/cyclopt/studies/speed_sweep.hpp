@@ -27,6 +27,7 @@
 // options to change. BestPoint::step tells which step found the curve through the selected point.
 #include "cyclopt/continuation/continuation_solver.hpp"
 #include "cyclopt/studies/sweep_journal.hpp"
+#include "cyclopt/studies/sweep_progress.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include <cstdint>
 #include <functional>
@@ -59,6 +60,9 @@ struct SpeedSweepOptions {
   // try (HMT P2 downwards near 0.46 m/s: ~16000 corrector iterations per run). >= 1.
   int corrector_max_iterations = 300;
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
+  // Called when a phase begins, after every multistart solve and at every converged grid point
+  // (sweep_progress.hpp); from the sweep's thread or, one call at a time, from multistart workers.
+  std::function<void(const SweepProgress&)> on_progress;
 };
 
 // The step of the sweep that found a curve (the first point of it).
