@@ -6,8 +6,11 @@
 #include <cyclopt_lcm/query_reply_t.hpp>
 #include <cyclopt_lcm/query_request_t.hpp>
 
+#include "cyclopt/cli/version.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/resolved_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/stored_start.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 
@@ -114,13 +117,18 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
                     "spec_json: oversize, " + std::to_string(msg.spec_json.size()) + " bytes, at most " +
                         std::to_string(channels::kMaxSpecBytes) + " allowed",
                     key);
-    auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(msg.spec_json, kinds_));
+    // A start naming a stored point becomes that point's x here, once (stored_start.hpp).
+    const nlohmann::json spec = service::with_stored_start(service::parse_job_spec_text(msg.spec_json), store_);
+    auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec(spec, kinds_));
     const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
     const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
+    const nlohmann::json resolved = service::resolved_spec(*v, spec);
     // The parsed spec goes to the worker with the job: it is not parsed again.
-    const storage::SubmitOutcome out =
-        pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender, cost.seconds}, config_.quota, v);
+    const storage::SubmitOutcome out = pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender,
+                                                     cost.seconds, cli::git_revision(),
+                                                     service::random_seeds(resolved).dump(), resolved.dump()},
+                                                    config_.quota, v);
     if (out.over_quota)
       return reject(msg.request_id, "queue",
                     "queue: sender '" + sender + "' has " + std::to_string(out.queued_jobs) + " queued jobs estimated at " +

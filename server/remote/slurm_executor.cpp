@@ -3,6 +3,8 @@
 #include "command.hpp"
 #include "unit_spool.hpp"
 
+#include "cyclopt/service/stored_start.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -116,7 +118,7 @@ class Unit {
     UnitSpec spec;
     spec.job_id = job_.id;
     spec.task = job_.task;
-    spec.spec_json = job_.spec_json;
+    spec.spec_json = service::runnable_spec_text(job_);  // the worker has no database to resolve a stored start
     spec.limits = ctx_.limits();
     spec.run_seconds_before = job_.run_seconds;
     spec.submitted_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();

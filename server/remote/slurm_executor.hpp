@@ -19,7 +19,7 @@ namespace cyclopt::server::remote {
 class SlurmExecutor final : public JobExecutor {
  public:
   explicit SlurmExecutor(SlurmOptions options);
-  // Runs the job's stored spec text (job.spec_json) in cyclopt-worker, which parses it itself.
+  // Runs the job's stored spec text (service::runnable_spec_text) in cyclopt-worker, which parses it itself.
   void run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const override;
 
  private:

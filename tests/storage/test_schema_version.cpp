@@ -96,6 +96,43 @@ INSERT INTO solutions (job_id, curve_index, point_index, status, values_json, so
   EXPECT_EQ(open_error(OpenMode::read_only), "");
 }
 
+// Version 3 added what reproduces a job (jobs.program_version, seeds_json, resolved_spec_json): a
+// version-2 file gets them, its jobs with '' (unknown), and new jobs store them.
+TEST_F(SchemaVersionTest, AVersionTwoFileGetsTheReproducibilityColumns) {
+  {
+    ResultStore s(path_);
+    s.submit("old", "walker", "optimise", "{}");
+  }
+  {  // back to the version-2 layout
+    Connection c(path_, false);
+    c.exec("ALTER TABLE jobs DROP COLUMN program_version");
+    c.exec("ALTER TABLE jobs DROP COLUMN seeds_json");
+    c.exec("ALTER TABLE jobs DROP COLUMN resolved_spec_json");
+  }
+  set_version("2");
+  EXPECT_NE(open_error(OpenMode::read_only).find("schema version 2"), std::string::npos);
+  {
+    ResultStore s(path_);  // migrates
+    const JobRecord old = *s.job(1);
+    EXPECT_EQ(old.program_version, "");
+    EXPECT_EQ(old.resolved_spec_json, "");
+    EXPECT_EQ(old.seeds_json, "{}");
+    const nlohmann::json row = run_query(s, query_for("job", 1)).rows.at(0);
+    EXPECT_EQ(row["resolved_spec"], nullptr);
+    EXPECT_EQ(row["seeds"], nlohmann::json::object());
+    Submission sub{"new", "walker", "multistart", "{}", "", 0.0, "abc1234", R"({"multistart.seed": 3})", R"({"speed": 1})"};
+    const auto id = s.submit(sub, SenderQuota{}).job_id;
+    const JobRecord j = *s.job(id);
+    EXPECT_EQ(j.program_version, "abc1234");
+    EXPECT_EQ(j.seeds_json, R"({"multistart.seed": 3})");
+    const nlohmann::json new_row = run_query(s, query_for("job", id)).rows.at(0);
+    EXPECT_EQ(new_row["program_version"], "abc1234");
+    EXPECT_EQ(new_row["seeds"], (nlohmann::json{{"multistart.seed", 3}}));
+    EXPECT_EQ(new_row["resolved_spec"], (nlohmann::json{{"speed", 1}}));
+  }
+  EXPECT_EQ(version(), std::to_string(kSchemaVersion));
+}
+
 TEST_F(SchemaVersionTest, ANewerFileIsRefusedAndLeftAsItIs) {
   { ResultStore s(path_); }
   const std::string newer = std::to_string(kSchemaVersion + 1);

@@ -61,7 +61,7 @@
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/service/job_cost.hpp"
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include <functional>
 #include <map>
@@ -98,6 +98,10 @@ struct JobKind {
   // Expected time and memory of a parsed spec, checked against the server's limits before the job
   // is queued (job_cost.hpp); empty: the kind's jobs are cheap (seconds, little memory).
   std::function<JobCost(const KindSpec& spec)> estimate;
+  // The kind's fields of a parsed spec with every default filled in, in the spec's own form (so
+  // that submitting them again gives the same job), stored with the job (resolved_spec.hpp);
+  // empty: the kind does not resolve its fields and the stored resolved spec says so.
+  std::function<nlohmann::json(const KindSpec& spec)> resolve;
 };
 
 // A JobKind whose parse returns a Spec and whose run and estimate take it.
@@ -105,19 +109,21 @@ template <class Spec>
 JobKind typed_job_kind(std::string task, std::vector<std::string> scenes, std::vector<std::string> fields,
                        std::function<Spec(const nlohmann::json&, const CommonJobFields&)> parse,
                        std::function<void(const Spec&, JobContext&)> run,
-                       std::function<JobCost(const Spec&)> estimate = {}) {
+                       std::function<JobCost(const Spec&)> estimate = {},
+                       std::function<nlohmann::json(const Spec&)> resolve = {}) {
   // The one cast: a kind is only ever given what its own parse returned.
   auto typed = [task](const KindSpec& s) -> const Spec& {
     const auto* t = dynamic_cast<const KindSpecOf<Spec>*>(&s);
     if (!t) throw std::logic_error("job kind '" + task + "' was given a spec that another kind parsed");
     return t->spec();
   };
-  JobKind kind{std::move(task), std::move(scenes), std::move(fields), {}, {}, {}};
+  JobKind kind{std::move(task), std::move(scenes), std::move(fields), {}, {}, {}, {}};
   kind.parse = [parse = std::move(parse)](const nlohmann::json& spec, const CommonJobFields& common) {
     return std::shared_ptr<const KindSpec>(std::make_shared<const KindSpecOf<Spec>>(parse(spec, common)));
   };
   kind.run = [typed, run = std::move(run)](const KindSpec& s, JobContext& ctx) { run(typed(s), ctx); };
   if (estimate) kind.estimate = [typed, estimate = std::move(estimate)](const KindSpec& s) { return estimate(typed(s)); };
+  if (resolve) kind.resolve = [typed, resolve = std::move(resolve)](const KindSpec& s) { return resolve(typed(s)); };
   return kind;
 }
 

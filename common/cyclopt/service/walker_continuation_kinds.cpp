@@ -6,6 +6,7 @@
 #include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
@@ -68,6 +69,21 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   }
   if (j.values.size() < 2) throw SpecError(j.parameter == "speed" ? "speeds" : "continuation.values", "needs at least two values");
   return j;
+}
+
+// The resolved spec (resolved_spec.hpp): the walker fields and the whole "continuation" block;
+// seed_speeds and the multistart only for a sweep, which draws random starts at them.
+nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
+  nlohmann::json r = walker_job_json(j.walker, true, sweep);
+  nlohmann::json c = {{"predictor", continuation::to_string(j.options.predictor)},
+                      {"fixed_step", j.options.fixed_step},
+                      {"min_trust_region", j.options.min_trust_region},
+                      {"max_trust_region", j.options.max_trust_region},
+                      {"parameter", j.parameter}};
+  if (j.parameter != "speed") c["values"] = j.values;
+  if (sweep) c["seed_speeds"] = j.seed_speeds;
+  r["continuation"] = c;
+  return r;
 }
 
 // Stores curve points as they come: curve_index = curve id + offset, numbered along the curve.
@@ -175,7 +191,8 @@ JobKind continuation_kind(const std::string& task, void (*run)(const Continuatio
                                          [task](const ContinuationJob& j) {
                                            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()),
                                                                   static_cast<int>(j.seed_speeds.size()));
-                                         });
+                                         },
+                                         [task](const ContinuationJob& j) { return continuation_job_json(j, task == "sweep"); });
 }
 
 }  // namespace

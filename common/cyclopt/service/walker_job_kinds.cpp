@@ -2,6 +2,7 @@
 
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -108,7 +109,6 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
     p.values["kkt_successes"] = r.successes;
     p.values["starts"] = job.starts;
     p.values["wall_seconds"] = r.wall_seconds;
-    p.values["x"] = std::vector<double>(o.x.data(), o.x.data() + o.x.size());
     ctx.store_point(p);
   }
 }
@@ -117,7 +117,8 @@ JobKind walker_kind(const std::string& task, void (*run)(const WalkerJob&, JobCo
   return typed_job_kind<WalkerJob>(
       task, {"walker"}, walker_job_fields(false),
       [](const nlohmann::json& spec, const CommonJobFields& common) { return parse_walker_job(spec, common, false); },
-      run, [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); });
+      run, [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); },
+      [task](const WalkerJob& job) { return walker_job_json(job, false, task == "multistart"); });
 }
 
 }  // namespace

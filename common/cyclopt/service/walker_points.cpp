@@ -34,6 +34,7 @@ records::WalkerPointRecord optimum_values(const walker::GaitOptimum& opt) {
   v.solver = solver_record(opt.summary);
   v.start = opt.start;
   v.start_objective = opt.start_objective;
+  v.x.assign(opt.z.data(), opt.z.data() + opt.z.size());  // a later job can start from it (stored_start.hpp)
   return v;
 }
 
@@ -76,7 +77,6 @@ storage::SolutionPoint point_of(const continuation::ParametricProblem& family, c
                                                    .kappa = c.kappa,
                                                    .trust_region = c.trust_region,
                                                    .point_seconds = c.seconds};
-  v.x.assign(c.x.data(), c.x.data() + c.x.size());
   return optimum_point(opt, v, key, c.parameter);
 }
 

@@ -27,6 +27,9 @@ struct JobRecord {
   double run_seconds = 0.0;
   double publish_seconds = 0.0;
   std::string error;
+  std::string program_version;     // git revision of the accepting server ("" before schema 3)
+  std::string seeds_json = "{}";   // random seeds by field of the resolved spec
+  std::string resolved_spec_json;  // the spec with defaults filled in ("" before schema 3)
 };
 
 }  // namespace cyclopt::storage

@@ -149,8 +149,14 @@ nlohmann::json to_json(const JobRecord& job, bool with_spec) {
                       {"points_converged", job.points_converged ? nlohmann::json(*job.points_converged) : nlohmann::json(nullptr)},
                       {"run_seconds", job.run_seconds},
                       {"publish_seconds", job.publish_seconds},
-                      {"error", utf8(job.error)}};
-  if (with_spec) j["spec"] = json_cell(job.spec_json, "spec_json");
+                      {"error", utf8(job.error)},
+                      {"program_version", utf8(job.program_version)},
+                      {"seeds", json_cell(job.seeds_json, "seeds_json")}};
+  if (with_spec) {
+    j["spec"] = json_cell(job.spec_json, "spec_json");
+    j["resolved_spec"] = job.resolved_spec_json.empty() ? nlohmann::json(nullptr)
+                                                        : json_cell(job.resolved_spec_json, "resolved_spec_json");
+  }
   return j;
 }
 

@@ -21,7 +21,7 @@ constexpr const char* kJobColumns =
     "j.id, j.request_id, j.scene, j.task, j.spec_json, j.state, j.cancel_requested, j.attempts, j.submitted_at, "
     "j.started_at, j.finished_at, j.points_total, "
     "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error, "
-    "j.points_converged";
+    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json";
 
 std::optional<double> optional_real(const Statement& s, int col) {
   return s.is_null(col) ? std::nullopt : std::optional<double>(s.real(col));
@@ -46,6 +46,9 @@ JobRecord read_job(const Statement& s) {
   r.publish_seconds = s.real(14);
   r.error = s.text(15);
   if (!s.is_null(16)) r.points_converged = static_cast<int>(s.int64(16));
+  r.program_version = s.text(17);
+  r.seeds_json = s.text(18);
+  r.resolved_spec_json = s.text(19);
   return r;
 }
 
@@ -89,7 +92,8 @@ void check_integrity(Connection& db, const std::string& path) {
                        "sqlite3 '" + path + "' .recover");
 }
 
-// Columns added while schema version 1 was deployed: added to older files (migration to version 2).
+// Columns added while schema version 1 was deployed (migration to version 2), and those of version
+// 3: added to older files.
 void add_missing_columns(Connection& db) {
   std::set<std::string> columns;
   {
@@ -99,6 +103,10 @@ void add_missing_columns(Connection& db) {
   if (!columns.count("sender")) db.exec("ALTER TABLE jobs ADD COLUMN sender TEXT NOT NULL DEFAULT ''");
   if (!columns.count("estimated_seconds")) db.exec("ALTER TABLE jobs ADD COLUMN estimated_seconds REAL");
   if (!columns.count("points_converged")) db.exec("ALTER TABLE jobs ADD COLUMN points_converged INTEGER");
+  if (!columns.count("program_version")) db.exec("ALTER TABLE jobs ADD COLUMN program_version TEXT NOT NULL DEFAULT ''");
+  if (!columns.count("seeds_json")) db.exec("ALTER TABLE jobs ADD COLUMN seeds_json TEXT NOT NULL DEFAULT '{}'");
+  if (!columns.count("resolved_spec_json"))
+    db.exec("ALTER TABLE jobs ADD COLUMN resolved_spec_json TEXT NOT NULL DEFAULT ''");
   std::set<std::string> solution_columns;
   {
     Statement q(db, "PRAGMA table_info(solutions)");
@@ -177,8 +185,8 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
     return out;
   }
   Statement ins(db_,
-                "INSERT INTO jobs (request_id, scene, task, spec_json, submitted_at, sender, estimated_seconds) "
-                "VALUES (?, ?, ?, ?, ?, ?, ?)");
+                "INSERT INTO jobs (request_id, scene, task, spec_json, submitted_at, sender, estimated_seconds, "
+                "program_version, seeds_json, resolved_spec_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   ins.bind(1, sub.request_id)
       .bind(2, sub.scene)
       .bind(3, sub.task)
@@ -186,6 +194,9 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
       .bind(5, unix_now())
       .bind(6, sub.sender)
       .bind(7, sub.estimated_seconds)
+      .bind(8, sub.program_version)
+      .bind(9, sub.seeds_json)
+      .bind(10, sub.resolved_spec_json)
       .run();
   out.job_id = db_.last_insert_rowid();
   add_event_locked(out.job_id, "submitted", "request " + sub.request_id);
@@ -195,7 +206,7 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
 
 SubmitOutcome ResultStore::submit(const std::string& request_id, const std::string& scene, const std::string& task,
                                   const std::string& spec_json) {
-  return submit({request_id, scene, task, spec_json, "", 0.0},
+  return submit({request_id, scene, task, spec_json, "", 0.0, "", "{}", ""},
                 {std::numeric_limits<int>::max(), std::numeric_limits<double>::infinity()});
 }
 
@@ -355,6 +366,14 @@ std::set<PointKey> ResultStore::stored_points(std::int64_t job_id) {
   q.bind(1, job_id);
   while (q.step()) keys.insert({static_cast<int>(q.int64(0)), static_cast<int>(q.int64(1))});
   return keys;
+}
+
+std::optional<std::string> ResultStore::point_values(std::int64_t job_id, PointKey key) {
+  std::lock_guard lock(mutex_);
+  Statement q(db_, "SELECT values_json FROM solutions WHERE job_id = ? AND curve_index = ? AND point_index = ?");
+  q.bind(1, job_id).bind(2, std::int64_t{key.curve_index}).bind(3, std::int64_t{key.point_index});
+  if (!q.step()) return std::nullopt;
+  return q.text(0);
 }
 
 std::vector<RequiredPoint> ResultStore::required_points(std::int64_t job_id) {

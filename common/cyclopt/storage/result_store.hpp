@@ -36,6 +36,11 @@ struct Submission {
   std::string spec_json;
   std::string sender;
   double estimated_seconds = 0.0;  // the job's cost estimate (service/job_cost.hpp)
+  // What reproduces the job (results_schema.hpp): the accepting build's git revision, the random
+  // seeds by field ({"multistart.seed": 1}) and the spec with its defaults filled in.
+  std::string program_version;
+  std::string seeds_json = "{}";
+  std::string resolved_spec_json;
 };
 
 // Per-sender limits on queued (not yet running) jobs; checked in the submission's transaction.
@@ -89,6 +94,8 @@ class ResultStore {
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
   std::set<PointKey> stored_points(std::int64_t job_id);
+  // The values_json of a stored point; nullopt if the job has no such point.
+  std::optional<std::string> point_values(std::int64_t job_id, PointKey key);
   // The stored points with required = 1 (solution_point.hpp), by curve and point index.
   std::vector<RequiredPoint> required_points(std::int64_t job_id);
   void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces

@@ -22,7 +22,10 @@ CREATE TABLE IF NOT EXISTS jobs (
   run_seconds REAL NOT NULL DEFAULT 0,
   publish_seconds REAL NOT NULL DEFAULT 0,
   error TEXT,
-  points_converged INTEGER
+  points_converged INTEGER,
+  program_version TEXT NOT NULL DEFAULT '',
+  seeds_json TEXT NOT NULL DEFAULT '{}',
+  resolved_spec_json TEXT NOT NULL DEFAULT ''
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs (state, id);
 CREATE TABLE IF NOT EXISTS events (

@@ -1,5 +1,5 @@
 #pragma once
-// The SQLite schema of the results database (version 2, kSchemaVersion). The database runs in WAL mode with
+// The SQLite schema of the results database (version 3, kSchemaVersion). The database runs in WAL mode with
 // synchronous=NORMAL and foreign keys on: every committed point survives a kill -9 of the server.
 //
 //   jobs          one row per accepted submission; also the durable queue.
@@ -22,6 +22,12 @@
 //     points_converged INTEGER            required points that converged (NULL until the job ends)
 //     sender        TEXT                  who submitted it, for the queue quota ("" anonymous)
 //     estimated_seconds REAL              the cost estimate at submission (service/job_cost.hpp)
+//     program_version TEXT                the git revision of the server that accepted it
+//                                         (cli/version.hpp; '' for jobs stored before version 3)
+//     seeds_json    TEXT                  the random seeds the job uses, by field of the resolved
+//                                         spec: {"multistart.seed": 1} ('{}': none)
+//     resolved_spec_json TEXT             the spec with every default filled in
+//                                         (service/resolved_spec.hpp; '' before version 3)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
 //                 requeued, cancel_requested, done, failed, cancelled, interrupted
 //   curves        (id, job_id, curve_index, name, parameter_name), UNIQUE(job_id, curve_index):
@@ -44,7 +50,8 @@
 // estimated_seconds, points_converged, solutions.required, checkpoints, state 'incomplete');
 // 2 the same tables, with values_json and the "json" trajectories holding the records of the
 // result contract (records/: gait, solver, walker point, foot comparison) and the version checked
-// on open. Migrating 1 -> 2 adds what a version-1 file lacks and records version 2.
+// on open; 3 adds jobs.program_version, seeds_json and resolved_spec_json (reproducible results).
+// Migrating adds the columns an older file lacks and records version 3.
 //
 // Example queries: README.md, section "The service".
 
@@ -52,7 +59,7 @@
 
 namespace cyclopt::storage {
 
-inline constexpr int kSchemaVersion = 2;
+inline constexpr int kSchemaVersion = 3;
 
 // DDL creating every table and index (IF NOT EXISTS, so it is idempotent).
 std::string_view results_schema_sql();

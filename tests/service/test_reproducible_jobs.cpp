@@ -1,0 +1,192 @@
+// Issue 17 item 7, reproducible results: every job the server accepts is stored with the git
+// revision of the server, the random seeds it uses and its spec with every default filled in
+// (service/resolved_spec.hpp), and that resolved spec, submitted again, is the same job. A walker
+// job can start from a point an earlier job stored (service/stored_start.hpp); a bad reference is
+// rejected naming its field.
+#include "cyclopt/cli/version.hpp"
+#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/resolved_spec.hpp"
+#include "cyclopt/service/stored_start.hpp"
+#include "memq_server_fixture.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cyclopt {
+namespace {
+
+using ReproducibleJobs = testing::MemqServerTest;
+
+nlohmann::json job_row(client::ServiceClient& client, std::int64_t id) {
+  const auto page = client.query(storage::query_for("job", id), 5.0);
+  EXPECT_TRUE(page);
+  return page ? page->rows.at(0) : nlohmann::json();
+}
+
+TEST_F(ReproducibleJobs, AStoredJobRecordsTheVersionTheSeedsAndTheResolvedSpec) {
+  server::Server srv(config_, kinds_, lcm_);
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "multistart"}, {"foot", "P1-barefoot-left-HM"},
+                               {"speed", 1.0}, {"points", 50}, {"solver", {{"max_iterations", 30}}},
+                               {"multistart", {{"starts", 2}, {"seed", 42}}}};
+  const auto ack = client_.submit("repro-multistart", spec.dump(), 5.0);
+  ASSERT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
+  const nlohmann::json job = job_row(client_, ack->job_id);
+  EXPECT_EQ(job["program_version"], cli::git_revision());
+  EXPECT_NE(job["program_version"], "");
+  EXPECT_EQ(job["seeds"], (nlohmann::json{{"multistart.seed", 42}}));
+  const nlohmann::json& r = job["resolved_spec"];
+  std::printf("resolved sweep spec: %s\n", r.dump().c_str());
+  EXPECT_EQ(r["speed"], 1.0);
+  EXPECT_EQ(r["foot"]["model"], "HM");                   // the preset as its full parameters
+  EXPECT_TRUE(r["foot"].contains("l_HM"));
+  EXPECT_EQ(r["solver"]["solver"], "sqp");               // the seed's Table 6.2 defaults
+  EXPECT_EQ(r["solver"]["max_iterations"], 30);
+  EXPECT_EQ(r["solver"]["optimality_tolerance"], 1e-5);
+  EXPECT_EQ(r["points"], 50);
+  EXPECT_EQ(r["bezier_degree"], 6);
+  EXPECT_EQ(r["objective"], "f_mech");
+  EXPECT_EQ(r["multistart"], (nlohmann::json{{"starts", 2}, {"seed", 42}, {"scale", 0.05}}));
+  const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 120.0);
+  ASSERT_TRUE(done);
+}
+
+// The resolved spec of each walker kind is itself a valid spec that resolves to itself: the
+// defaults it spells out are the ones the job ran with.
+TEST(ResolvedSpec, TheResolvedSpecOfAWalkerJobIsTheSameJob) {
+  const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  const std::vector<nlohmann::json> specs = {
+      {{"scene", "walker"}, {"task", "evaluate"}, {"foot", "point"}, {"speed", 1.0}},
+      {{"scene", "walker"}, {"task", "optimise"}, {"foot", "P1-barefoot-left-HM"}, {"speed", 1.3},
+       {"objective", "f_usq"}, {"solver", {{"solver", "ipopt"}}}, {"free_parameters", {"l_HM", "h_F"}},
+       {"design_bounds", {{"l_HM_max", 0.3}}}},
+      {{"scene", "walker"}, {"task", "multistart"}, {"foot", "P1-barefoot-left-HM"}, {"speed", 1.3},
+       {"multistart", {{"starts", 4}}}, {"name", "four starts"}, {"limits", {{"max_wall_seconds", 60}}}},
+      {{"scene", "walker"}, {"task", "continuation"}, {"foot", "point"}, {"speeds", "0.5:0.5:1.5"},
+       {"continuation", {{"predictor", "trivial"}, {"fixed_step", 0.2}}}},
+      {{"scene", "walker"}, {"task", "continuation"}, {"foot", "P1-barefoot-left-HM"}, {"speeds", 1.0},
+       {"continuation", {{"parameter", "l_HM"}, {"values", "0.1:0.05:0.2"}}}},
+      {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", {0.5, 1.0}},
+       {"multistart", {{"seed", 9}}}, {"continuation", {{"seed_speeds", 1.0}}}},
+  };
+  for (const nlohmann::json& spec : specs) {
+    const nlohmann::json first = service::resolved_spec(service::validate_job_spec(spec, kinds), spec);
+    EXPECT_FALSE(first.contains("resolved")) << first.dump();
+    if (spec.contains("design_bounds")) {
+      EXPECT_EQ(first["design_bounds"]["l_HM_max"], 0.3) << first.dump();
+    }
+    nlohmann::json again;
+    ASSERT_NO_THROW(again = service::resolved_spec(service::validate_job_spec(first, kinds), first)) << first.dump();
+    EXPECT_EQ(again, first);
+  }
+}
+
+TEST(ResolvedSpec, SeedsAreTheFieldsNamedSeed) {
+  EXPECT_EQ(service::random_seeds({{"multistart", {{"seed", 7}, {"starts", 3}}}, {"seed_speeds", {1}}}),
+            (nlohmann::json{{"multistart.seed", 7}}));
+  EXPECT_EQ(service::random_seeds({{"speed", 1.0}}), nlohmann::json::object());
+}
+
+// A kind without a resolver stores its fields as submitted and says that they are not resolved.
+TEST(ResolvedSpec, AKindWithoutAResolverSaysSo) {
+  const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_sweep"}, {"foot", "P2-shoes-left-HMT"},
+                               {"sweep", {{"parameter", "density"}, {"values", "20:20:60"}}}};
+  const nlohmann::json r = service::resolved_spec(service::validate_job_spec(spec, kinds), spec);
+  EXPECT_EQ(r["resolved"], false);
+  EXPECT_EQ(r["sweep"], spec["sweep"]);
+}
+
+// Re-running what a job found: an optimise job at the same speed, started from the optimum an
+// optimise job stored, is at the optimum from its first iterations.
+TEST_F(ReproducibleJobs, AnOptimiseStartedFromAStoredOptimumConvergesAtOnce) {
+  const nlohmann::json first = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.0},
+                                {"solver", {{"max_iterations", 600}}}};
+  const auto rows = run_job("repro-first", first, 1);
+  ASSERT_EQ(rows.size(), 1u);
+  const int first_iterations = rows[0]["iterations"].get<int>();
+  ASSERT_EQ(rows[0]["status"], "converged");
+  const std::vector<double> x = rows[0]["values"]["x"].get<std::vector<double>>();
+  ASSERT_EQ(x.size(), 20u);  // point feet: (M - 1) n_b = 5 x 4, no free parameters
+  nlohmann::json again = first;
+  again["start"] = {{"job", 1}, {"point", 0}};
+  const auto rerun = run_job("repro-again", again, 1);
+  ASSERT_EQ(rerun.size(), 1u);
+  const int iterations = rerun[0]["iterations"].get<int>();
+  std::printf("optimise from the starting gait: %d iterations; from job 1's optimum: %d\n", first_iterations, iterations);
+  EXPECT_EQ(rerun[0]["status"], "converged");
+  EXPECT_LE(iterations, 3);
+  EXPECT_NEAR(rerun[0]["objective"].get<double>(), rows[0]["objective"].get<double>(), 1e-8);
+  server::Server srv(config_, kinds_, lcm_);
+  const storage::JobRecord job = *srv.store().job(2);
+  EXPECT_EQ(nlohmann::json::parse(job.spec_json)["start"], again["start"]);  // as submitted
+  EXPECT_EQ(nlohmann::json::parse(job.resolved_spec_json)["start"], x);       // what it ran from
+  EXPECT_EQ(service::runnable_spec_text(job), job.resolved_spec_json);  // a resumed job needs no lookup
+}
+
+class StoredStartReferences : public testing::MemqServerTest {
+ protected:
+  void SetUp() override {
+    MemqServerTest::SetUp();
+    store_ = std::make_unique<storage::ResultStore>(config_.database);
+    // job 1: an optimised point-foot gait (curve 0, point 0) and a point without x (curve 1, point 0)
+    store_->submit("walker", "walker", "optimise", R"({"scene": "walker", "task": "optimise", "foot": "point", "speed": 1.0})");
+    storage::SolutionPoint p;
+    p.values = {{"x", std::vector<double>(20, 0.1)}};
+    store_->store_point(1, p);
+    p.key = {1, 0};
+    p.values = {{"reason", "no gait found"}};
+    store_->store_point(1, p);
+    store_->submit("swing", "giant_swing", "giant_swing", R"({"scene": "giant_swing", "task": "giant_swing"})");  // job 2
+  }
+
+  // The SpecError of resolving `start` in an optimise spec ("field: message"), or "resolved".
+  std::string rejection(const nlohmann::json& start, const std::string& foot = "point") {
+    try {
+      service::with_stored_start({{"scene", "walker"}, {"task", "optimise"}, {"foot", foot}, {"speed", 1.0}, {"start", start}},
+                                 *store_);
+    } catch (const SpecError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(e.field() + ": ", 0), 0u) << e.what();
+      return e.what();  // "field: message"
+    }
+    return "resolved";
+  }
+
+  std::unique_ptr<storage::ResultStore> store_;
+};
+
+TEST_F(StoredStartReferences, AReferenceBecomesThePointsGaitParameters) {
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.2},
+                               {"start", {{"job", 1}, {"curve", 0}, {"point", 0}}}};
+  EXPECT_EQ(service::with_stored_start(spec, *store_)["start"], std::vector<double>(20, 0.1));
+  const nlohmann::json plain = {{"scene", "walker"}, {"task", "optimise"}, {"start", {1, 2}}};
+  EXPECT_EQ(service::with_stored_start(plain, *store_), plain);  // an x list is left to the walker fields
+}
+
+TEST_F(StoredStartReferences, BadReferencesAreRejectedNamingTheField) {
+  const auto starts_with = [](const std::string& text, const std::string& prefix) {
+    return text.rfind(prefix, 0) == 0;
+  };
+  const std::map<std::string, nlohmann::json> cases = {
+      {"start.job: there is no job 9", {{"job", 9}, {"point", 0}}},
+      {"start.point: job 1 has no stored point (curve 0, point 4); it has 2", {{"job", 1}, {"point", 4}}},
+      {"start.curve: job 1 has no stored point (curve 7, point 0)", {{"job", 1}, {"curve", 7}, {"point", 0}}},
+      {"start.point: point (curve 1, point 0) of job 1 holds no gait parameters x", {{"job", 1}, {"curve", 1}, {"point", 0}}},
+      {"start.job: job 2 is a giant_swing giant_swing job", {{"job", 2}, {"point", 0}}},
+      {"start.job: is required", {{"point", 0}}},
+      {"start.point: is required", {{"job", 1}}},
+      {"start.job: must be in [1,", {{"job", 0}, {"point", 0}}},
+      {"start.point: must be in [0,", {{"job", 1}, {"point", -1}}},
+      {"start.index: unknown field", {{"job", 1}, {"index", 0}}},
+  };
+  for (const auto& [expected, start] : cases) {
+    const std::string got = rejection(start);
+    EXPECT_TRUE(starts_with(got, expected)) << "start " << start.dump() << ": " << got;
+  }
+  const std::string other_foot = rejection({{"job", 1}, {"point", 0}}, "P1-barefoot-left-HM");
+  EXPECT_TRUE(starts_with(other_foot, "start.job: job 1 is for the foot model point, this job's foot is HM")) << other_foot;
+  // The client, without the database, checks the reference's form and the rest of the spec.
+  EXPECT_THROW(service::without_stored_start({{"start", {{"job", "seven"}, {"point", 0}}}}), SpecError);
+  EXPECT_FALSE(service::without_stored_start({{"start", {{"job", 7}, {"point", 0}}}}).contains("start"));
+}
+
+}  // namespace
+}  // namespace cyclopt
