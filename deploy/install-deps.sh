@@ -3,6 +3,8 @@
 # Idempotent; run as root (or with sudo). Packages come only from Debian's archive.
 #   --slurm  also Slurm and munge, for the Slurm executor's integration test (CI passes it; without
 #            them that test is skipped)
+#   --java   also a JDK and LCM's Java library, for the Java LCM types (lcm-spy, log decoding;
+#            without them the types and their test are not built)
 set -euo pipefail
 
 packages=(
@@ -19,9 +21,13 @@ packages=(
   libbenchmark-dev              # benchmarks
   iproute2 util-linux           # ip / unshare for network-namespace integration tests
 )
-if [ "${1:-}" = "--slurm" ]; then
-  packages+=(slurmctld slurmd slurm-client munge)  # single-node test cluster: deploy/slurm/local-cluster.sh
-fi
+for option in "$@"; do
+  case "$option" in
+    --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;  # single-node test cluster: deploy/slurm/local-cluster.sh
+    --java) packages+=(default-jdk-headless liblcm-java) ;;      # javac, /usr/share/java/lcm.jar, lcm-spy
+    *) echo "install-deps: unknown option '$option' (--slurm, --java)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
