@@ -6,6 +6,7 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/gait_animation.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
@@ -19,7 +20,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -260,8 +263,39 @@ TEST_F(WalkerFigures, ReportIsOneSelfContainedPageWithTableAndFigures) {
   EXPECT_NE(html.find("<td>1.200</td>"), std::string::npos);
   std::size_t svgs = 0;
   for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, walker_figure_kinds().size());
+  std::size_t animated = 0;  // one gait animation per converged speed
+  for (const GaitPoint& p : walker_job_results(document_of(2, *hmt_)).points) animated += p.converged && p.trajectory;
+  ASSERT_GT(animated, 0u);
+  EXPECT_EQ(svgs, walker_figure_kinds().size() + animated);
   EXPECT_EQ(html.find("src=\""), std::string::npos);  // nothing external
+}
+
+// Issue 17: the report animates the gait of every converged speed with SMIL alone: torso, two legs
+// and two feet, each one element whose points step through the poses of two steps in real time.
+TEST_F(WalkerFigures, ReportAnimatesEveryConvergedGaitWithoutJavaScript) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
+  EXPECT_NE(html.find("<h2>Gait animations</h2>"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  std::size_t animates = 0;
+  for (std::size_t at = html.find("<animate attributeName=\"points\""); at != std::string::npos;
+       at = html.find("<animate attributeName=\"points\"", at + 1))
+    ++animates;
+  std::size_t converged = 0;
+  for (const GaitPoint& p : r.points) converged += p.converged && p.trajectory;
+  EXPECT_EQ(animates, 5 * converged);  // torso, legs A and B, feet A and B
+  const GaitPoint& p = *point_near(r, 1.2);
+  const std::string svg = gait_animation_svg(r, p, 10);
+  // 2 steps of 10 intervals: 21 poses, each a list of points; the loop lasts two step periods.
+  const std::size_t values = svg.find("values=\"");
+  ASSERT_NE(values, std::string::npos);
+  const std::string first = svg.substr(values + 8, svg.find('"', values + 8) - values - 8);
+  EXPECT_EQ(std::count(first.begin(), first.end(), ';'), 20);
+  char dur[48];
+  std::snprintf(dur, sizeof dur, "dur=\"%.4fs\"", 2 * p.trajectory->time.back());
+  EXPECT_NE(svg.find(dur), std::string::npos) << dur;
+  EXPECT_THROW(gait_animation_svg(r, p, 0), std::invalid_argument);
+  expect_ids_unique_per_page(html);
 }
 
 // Issue 17: cairo names glyphs "glyph0-1" ... in every SVG; inlined unchanged, figures 2-5 of a
@@ -269,8 +303,10 @@ TEST_F(WalkerFigures, ReportIsOneSelfContainedPageWithTableAndFigures) {
 TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) {
   const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
   const std::vector<std::string> svgs = inline_svgs(html);
-  ASSERT_EQ(svgs.size(), walker_figure_kinds().size());
-  for (const std::string& svg : svgs) ASSERT_NE(svg.find("glyph"), std::string::npos) << "a figure without text";
+  // The figures, then one gait animation (no text) per converged speed (1.0 and 1.2 m/s).
+  ASSERT_EQ(svgs.size(), walker_figure_kinds().size() + 2);
+  for (std::size_t i = 0; i < walker_figure_kinds().size(); ++i)
+    ASSERT_NE(svgs[i].find("glyph"), std::string::npos) << "a figure without text";
   // The figures as cairo wrote them do share ids (the failure this guards against) ...
   const std::vector<Figure> figures = walker_figures({walker_job_results(document_of(2, *hmt_))});
   const std::vector<std::string> raw1 = svg_ids(svg_of(figures[0])), raw2 = svg_ids(svg_of(figures[1]));
@@ -293,7 +329,29 @@ TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
   EXPECT_NEAR(s.shapes[0].points[1][0], 0.0, 1e-12);
   const fs::path png = out_dir() / "giant_swing_test.png";
   const RenderOptions size = fitted_options(s, 800);
-  EXPECT_NEAR(size.width, 800 + s.legend_room, 100);  // a full circle of swings is about as wide as high
+  // A full circle of swings is about as wide as high (Axes margins 104 + 110 px, legend above).
+  EXPECT_NEAR(size.width - 104, 800 - 110 - s.legend_headroom, 100);
+  // Issue 17: time and direction cues. Time stamps every 0.2 s (5 frames at 25 Hz) from 0 on, but
+  // not on top of an earlier one, each with an arrowhead on the feet path; all arrows turn the same
+  // way about the bar; later frames darker.
+  ASSERT_GE(s.labels.size(), 3u);
+  EXPECT_EQ(s.labels[0].text, "0.0 s");
+  for (std::size_t i = 1; i < s.labels.size(); ++i) {
+    const double t = std::stod(s.labels[i].text), before = std::stod(s.labels[i - 1].text);
+    EXPECT_GT(t, before);
+    EXPECT_NEAR(std::remainder(t, 0.2), 0.0, 1e-9) << s.labels[i].text;
+    EXPECT_GT(std::hypot(s.labels[i].x - s.labels[i - 1].x, s.labels[i].z - s.labels[i - 1].z), 0.3);
+  }
+  std::vector<double> turn;  // (position x direction) of each arrowhead: its sense about the bar
+  for (const Shape& sh : s.shapes)
+    if (sh.legend.rfind("direction of motion", 0) == 0) {
+      ASSERT_EQ(sh.points.size(), 3u);
+      const double bx = 0.5 * (sh.points[1][0] + sh.points[2][0]), bz = 0.5 * (sh.points[1][1] + sh.points[2][1]);
+      turn.push_back(bx * (sh.points[0][1] - bz) - bz * (sh.points[0][0] - bx));
+    }
+  EXPECT_EQ(turn.size(), s.labels.size());
+  for (double c : turn) EXPECT_GT(c * turn.front(), 0) << "an arrow against the swing";
+  EXPECT_LT(s.shapes[0].color.a, 0.5);
   render(s, png.string(), size);
   const testing::PngImage img = testing::inspect_png(png.string());
   EXPECT_EQ(img.height, 800);

@@ -16,18 +16,6 @@ namespace {
 constexpr Color kLegA{0.12, 0.47, 0.71, 1}, kLegB{0.84, 0.37, 0.0, 1}, kTorso{0.25, 0.25, 0.25, 1};
 constexpr Color kContact{0.84, 0.15, 0.16, 1}, kClearance{0.17, 0.63, 0.17, 1};
 
-// q_s at time t by linear interpolation of the stored grid (time is increasing).
-walker::CoordinateVector<double> q_at(const records::GaitTrajectoryRecord& tr, double t) {
-  const std::vector<double>& time = tr.time;
-  const auto hi = std::upper_bound(time.begin(), time.end(), t);
-  const std::size_t j = std::clamp<std::size_t>(static_cast<std::size_t>(hi - time.begin()), 1, time.size() - 1);
-  const double w = std::clamp((t - time[j - 1]) / (time[j] - time[j - 1]), 0.0, 1.0);
-  const std::vector<std::vector<double>>& q = tr.q;
-  walker::CoordinateVector<double> out(static_cast<Eigen::Index>(q.size()));
-  for (std::size_t r = 0; r < q.size(); ++r) out(static_cast<Eigen::Index>(r)) = (1 - w) * q[r].at(j - 1) + w * q[r].at(j);
-  return out;
-}
-
 std::vector<Xz> shifted(std::vector<Xz> pts, double dx) {
   for (Xz& p : pts) p[0] += dx;
   return pts;

@@ -33,6 +33,10 @@ void content(const Scene& scene, std::vector<double>& xs, std::vector<double>& z
     xs.push_back(m.x);
     zs.push_back(m.z);
   }
+  for (const Label& l : scene.labels) {
+    xs.push_back(l.x);
+    zs.push_back(l.z);
+  }
   if (scene.ground_z) zs.push_back(*scene.ground_z);
 }
 
@@ -94,6 +98,10 @@ void render(const Scene& scene, const std::string& path, const RenderOptions& op
   for (const Marker& m : scene.markers) {
     occupied.push_back(axes.to_pixel(m.x, m.z));
     canvas.circle(occupied.back(), m.radius, m.color);
+  }
+  for (const Label& l : scene.labels) {
+    const Point p = axes.to_pixel(l.x, l.z);
+    canvas.text({p.x, p.y + 0.35 * l.size}, l.text, l.size, l.color, Align::center);
   }
   axes.reset_clip();
   axes.draw_frame();

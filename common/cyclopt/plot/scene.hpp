@@ -29,10 +29,18 @@ struct Marker {
   std::string legend;  // shown in the legend when not empty (once per distinct text)
 };
 
+struct Label {
+  double x = 0, z = 0;  // the text's centre (m)
+  std::string text;
+  Color color{0.1, 0.1, 0.1, 1};
+  double size = 11;  // pixels
+};
+
 struct Scene {
   AxesStyle axes;
   std::vector<Shape> shapes;
   std::vector<Marker> markers;
+  std::vector<Label> labels;       // e.g. time stamps at frames
   std::optional<double> ground_z;  // draws the ground line and hatching at this height
   double pad = 0.05;               // margin around the content, fraction of its size
   double legend_room = 0;          // pixels kept empty right of the content for the legend

@@ -1,5 +1,6 @@
 #include "cyclopt/plot/walker_job_report.hpp"
 
+#include "cyclopt/plot/gait_animation.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 
 #include <cmath>
@@ -64,7 +65,18 @@ Report walker_job_report(const nlohmann::json& doc) {
   std::vector<std::string> not_drawn;
   for (const Figure& f : walker_figures({r}, std::nan(""), &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
-  report.sections = {spec, results, figures};
+  ReportSection animations;
+  animations.heading = "Gait animations";
+  animations.text = "Two steps of the gait at every converged speed in real time, looping (animated SVG); leg A blue, "
+                    "leg B orange.";
+  for (const GaitPoint& p : r.points)
+    if (p.converged && p.trajectory)
+      animations.figures.push_back({"v = " + number(p.gait.mean_speed, "%.2f") + " m/s, step length " +
+                                        number(p.gait.step_length, "%.3f") + " m, step period " +
+                                        number(p.gait.step_period, "%.3f") + " s",
+                                    gait_animation_svg(r, p)});
+  if (animations.figures.empty()) animations.text = "No converged gait with a stored trajectory to animate.";
+  report.sections = {spec, results, figures, animations};
   return report;
 }
 

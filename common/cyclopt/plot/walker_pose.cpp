@@ -1,5 +1,6 @@
 #include "cyclopt/plot/walker_pose.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cyclopt::plot {
@@ -36,6 +37,17 @@ WalkerPose walker_pose(const walker::WalkerModel<double>& m, const walker::Coord
     p.foot2 = placed(foot_outline, f.angle(walker::seg_F2) - m.foot_zero_angle, p.ankle2);
   }
   return p;
+}
+
+walker::CoordinateVector<double> q_at(const records::GaitTrajectoryRecord& tr, double t) {
+  const std::vector<double>& time = tr.time;
+  const auto hi = std::upper_bound(time.begin(), time.end(), t);
+  const std::size_t j = std::clamp<std::size_t>(static_cast<std::size_t>(hi - time.begin()), 1, time.size() - 1);
+  const double w = std::clamp((t - time[j - 1]) / (time[j] - time[j - 1]), 0.0, 1.0);
+  const std::vector<std::vector<double>>& q = tr.q;
+  walker::CoordinateVector<double> out(static_cast<Eigen::Index>(q.size()));
+  for (std::size_t r = 0; r < q.size(); ++r) out(static_cast<Eigen::Index>(r)) = (1 - w) * q[r].at(j - 1) + w * q[r].at(j);
+  return out;
 }
 
 }  // namespace cyclopt::plot

@@ -4,6 +4,7 @@
 // the single-support phase. Positions come from the walker's own stance_frame() and
 // point_position(); this file only adds the drawn extras (torso tip, foot outlines).
 
+#include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/walker/stance_kinematics.hpp"
 
 #include <array>
@@ -24,5 +25,8 @@ struct WalkerPose {
 // it is turned by -(theta_F - theta_F,0) about the ankle (the angle convention of e(phi)).
 WalkerPose walker_pose(const walker::WalkerModel<double>& m, const walker::CoordinateVector<double>& q,
                        const std::vector<Xz>& foot_outline);
+
+// q_s at time t of a stored step by linear interpolation of its time grid (t clamped to the step).
+walker::CoordinateVector<double> q_at(const records::GaitTrajectoryRecord& trajectory, double t);
 
 }  // namespace cyclopt::plot

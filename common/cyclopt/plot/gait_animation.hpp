@@ -1,0 +1,17 @@
+#pragma once
+// Animated SVG of a periodic gait (seed 001 Fig. 9.2 in motion): the walker's torso, legs and feet
+// over two steps in real time, looping. Pure SVG: every body part is one <polyline> or <polygon>
+// whose `points` an SMIL <animate> steps through the poses (no JavaScript), so it plays inline in
+// the HTML report. Step k is the stored step shifted by k step lengths with the legs' roles swapped.
+
+#include "cyclopt/plot/walker_job_results.hpp"
+
+#include <string>
+
+namespace cyclopt::plot {
+
+// `point`: a converged gait of `job` with its trajectory; `frames_per_step` >= 1 poses per step,
+// interpolated linearly by the browser in between. Throws std::invalid_argument otherwise.
+std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& point, int frames_per_step = 24);
+
+}  // namespace cyclopt::plot
