@@ -26,6 +26,8 @@ std::string progress_line(const cyclopt_lcm::job_progress_t& p, std::size_t widt
     std::snprintf(buf, sizeof buf, " %3.0f%% %d/%d", std::isfinite(p.percent) ? p.percent : 0.0, p.points_done, p.points_total);
     line.append(buf);
   }
+  // Time and ETA before the phase: a narrow terminal cuts the phase's end, not the ETA.
+  line.append(" | ").append(duration_text(p.elapsed_seconds)).append(", ETA ").append(duration_text(p.eta_seconds));
   if (!p.phase.empty()) {
     line.append(" | ").append(p.phase);
     if (p.phase_total > 0) {
@@ -42,7 +44,6 @@ std::string progress_line(const cyclopt_lcm::job_progress_t& p, std::size_t widt
     std::snprintf(buf, sizeof buf, " | objective %.6g", p.objective);
     line.append(buf);
   }
-  line.append(" | ").append(duration_text(p.elapsed_seconds)).append(", ETA ").append(duration_text(p.eta_seconds));
   if (line.size() > width) {
     line.resize(width > 3 ? width - 3 : width);
     if (width > 3) line.append("...");

@@ -1,7 +1,7 @@
 #pragma once
 // How `cyclopt watch` / `submit --watch` show a running job's progress (issue 17 item 3): one line
 // per report, e.g.
-//   job 3  29% 6/21 | continuation run 2 from 1.3 m/s upwards, curve 0 5/10 | best 0.02263 | 1:12, ETA 2:30
+//   job 3  29% 6/21 | 1:12, ETA 2:30 | continuation run 2 from 1.3 m/s upwards, curve 0 5/10 | best 0.02263
 // rewritten in place on a terminal, and in a log (stderr not a terminal) printed when the phase
 // changes and otherwise at most every few seconds.
 

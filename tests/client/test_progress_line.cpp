@@ -39,7 +39,7 @@ cyclopt_lcm::job_progress_t sweep_report() {
 
 TEST(ProgressLine, NamesPhasePointsBestObjectiveAndEta) {
   EXPECT_EQ(progress_line(sweep_report(), 200),
-            "job 3  29% 6/21 | continuation run 2 from 1.3 m/s upwards, curve 0 5/10 | best 0.02263 | 1:12, ETA 2:30");
+            "job 3  29% 6/21 | 1:12, ETA 2:30 | continuation run 2 from 1.3 m/s upwards, curve 0 5/10 | best 0.02263");
 }
 
 TEST(ProgressLine, UnknownsAreSaidAsSuch) {
@@ -49,7 +49,7 @@ TEST(ProgressLine, UnknownsAreSaidAsSuch) {
   p.phase_total = -1;
   p.best_objective = nan;
   p.eta_seconds = nan;
-  EXPECT_EQ(progress_line(p, 200), "job 3 | speed sweep | objective 0.031 | 1:12, ETA ?");
+  EXPECT_EQ(progress_line(p, 200), "job 3 | 1:12, ETA ? | speed sweep | objective 0.031");
 }
 
 TEST(ProgressLine, FitsTheTerminal) {

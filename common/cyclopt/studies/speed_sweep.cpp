@@ -254,7 +254,7 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
       stopped_ = true;
       return false;
     }
-    if (!skip && p.converged) reached(p, true);
+    if (!skip && p.converged) reached(p, !same_speed(p.parameter, t.speed));  // the start is no step
     if (skip || !p.converged || !p.on_grid) return true;
     // An earlier run followed this curve from here on already (both directions are continued
     // from every start and every curve jumped to): HMT P2's runs from 1.3, 1.5 and 2.3 m/s
