@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -66,6 +67,7 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
   std::mutex failure_mutex;
   std::mutex finished_mutex;  // on_run_finished and on_progress are called one at a time
   int runs_done = 0;
+  double best_objective = std::numeric_limits<double>::quiet_NaN();  // of the successful runs taken
   auto worker = [&] {
     try {
       const std::unique_ptr<Problem> problem = make_problem();
@@ -81,7 +83,9 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
         if (run.termination == Termination::user_stop) continue;
         const std::lock_guard<std::mutex> lock(finished_mutex);
         if (options.on_run_finished && !recorded) options.on_run_finished(i, run);
-        if (options.on_progress) options.on_progress(++runs_done, run);
+        ++runs_done;
+        if (run.success() && !(run.objective >= best_objective)) best_objective = run.objective;
+        if (options.on_progress) options.on_progress(runs_done, best_objective);
       }
     } catch (...) {
       const std::lock_guard<std::mutex> lock(failure_mutex);

@@ -37,8 +37,9 @@ struct MultistartOptions {
   std::function<std::optional<SolverSummary>(int)> recorded_run;
   std::function<void(int, const SolverSummary&)> on_run_finished;
   // Progress: after every run taken (solved to the end, or recorded_run), with the number of runs
-  // taken so far and the run; one call at a time, from worker threads.
-  std::function<void(int runs_done, const SolverSummary& run)> on_progress;
+  // taken so far and the lowest objective of the successful ones among them (NaN while none);
+  // one call at a time, from worker threads.
+  std::function<void(int runs_done, double best_objective)> on_progress;
 };
 
 // One distinct local optimum found by the successful runs.

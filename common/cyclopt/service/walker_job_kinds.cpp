@@ -11,7 +11,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <mutex>
 
 namespace cyclopt::service {
 
@@ -80,11 +79,9 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
                        .phase = "multistart", .phase_done = 0, .phase_total = job.starts};
   ctx.report_progress(where);
   const auto started = std::chrono::steady_clock::now();
-  std::mutex progress_mutex;
-  mo.on_progress = [&](int done, const nlp::SolverSummary& run) {  // from the multistart's workers
-    const std::lock_guard lock(progress_mutex);
+  mo.on_progress = [&](int done, double best) {  // from the multistart's workers, one call at a time
     where.phase_done = done;
-    if (run.success() && !(run.objective >= where.best_objective)) where.best_objective = run.objective;
+    where.best_objective = best;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     where.eta_seconds = seconds / done * (job.starts - done);  // runs taken from checkpoints make it optimistic
     ctx.report_progress(where);

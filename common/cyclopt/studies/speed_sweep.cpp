@@ -95,7 +95,6 @@ class Sweep {
   std::vector<bool> reached_;                    // per grid speed: a converged point on some curve
   int seed_batches_left_ = 0;                   // seed speeds whose multistart has not begun
   int computed_solves_ = 0;                     // multistart solves finished in this attempt (not resumed)
-  double multistart_wall_ = 0.0;                // of finished batches
   Clock::time_point batch_start_;
   double continuation_wall_ = 0.0;              // of finished runs
   int recoveries_left_ = 0;                     // unreached speeds not tried yet (in recovery)
@@ -125,7 +124,7 @@ void Sweep::reached(const CurvePoint& p, bool step) {
 
 double Sweep::eta_seconds() const {
   const double batch_wall = progress_.phase == SweepPhase::multistart ? seconds_since(batch_start_) : 0.0;
-  const double solve_rate = computed_solves_ > 0 ? (multistart_wall_ + batch_wall) / computed_solves_ : SweepProgress::kNaN;
+  const double solve_rate = computed_solves_ > 0 ? (r_.multistart_seconds + batch_wall) / computed_solves_ : SweepProgress::kNaN;
   const int unreached = progress_.speeds_total - progress_.speeds_reached;
   if (progress_.phase == SweepPhase::recovery) {
     const int done = static_cast<int>(r_.recoveries.size());
@@ -161,11 +160,12 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
     batch_start_ = Clock::now();
   }
   const int computed_before = computed_solves_;
-  mo.on_progress = [&](int done, const nlp::SolverSummary& run) {
+  mo.on_progress = [&](int done, double best) {
     const std::lock_guard lock(progress_mutex_);
     progress_.phase_done = done;
     computed_solves_ = computed_before + done - resumed;
-    if (run.success() && !(run.objective >= progress_.best_objective)) progress_.best_objective = run.objective;
+    // The lowest objective seen in the phase (begin_phase resets it for a seed batch).
+    if (std::isfinite(best) && !(best >= progress_.best_objective)) progress_.best_objective = best;
     report();
   };
   const std::clock_t cpu = std::clock();
@@ -173,11 +173,10 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
                                             std::move(starts), mo);
   r_.multistart_solves += n - resumed;
   r_.resumed_solves += resumed;
-  r_.multistart_seconds += m.wall_seconds;
   {
-    const std::lock_guard lock(progress_mutex_);
-    multistart_wall_ += m.wall_seconds;
-    batch_start_ = Clock::now();  // the batch's wall is in multistart_wall_ now
+    const std::lock_guard lock(progress_mutex_);  // eta_seconds reads both
+    r_.multistart_seconds += m.wall_seconds;
+    batch_start_ = Clock::now();  // the batch's wall is in multistart_seconds now
   }
   r_.multistart_cpu_seconds += static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
   return m;
