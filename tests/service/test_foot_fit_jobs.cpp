@@ -6,6 +6,7 @@
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 
@@ -77,6 +78,51 @@ TEST_F(FootFitJobs, StoresTheHmAndHmtFitsOfTheTrials) {
     }
   EXPECT_EQ(hmt.foot["model"], "HMT");
   EXPECT_EQ(nlohmann::json(rows[1]["values"].get<records::FootFitRecord>()), rows[1]["values"]);  // the record round-trips (NaN != NaN: compare JSON)
+}
+
+// Issue 20 item 3: the stored fit as the foot of a walker job, by reference (stored_foot_fit.hpp).
+TEST_F(FootFitJobs, AnOptimiseJobWalksOnTheStoredFit) {
+  server::Server srv(config_, kinds_, lcm_);
+  auto finished = [&](const std::string& id, const nlohmann::json& spec) -> std::int64_t {
+    const auto ack = client_.submit(id, spec.dump(), 5.0);
+    EXPECT_TRUE(ack && ack->accepted) << (ack ? ack->problem : "no ack");
+    if (!ack || !ack->accepted) return 0;
+    const auto done = client_.watch(ack->job_id, [](const cyclopt_lcm::job_progress_t&) {}, 300.0);
+    EXPECT_TRUE(done && done->state == "done") << (done ? done->error : "no done message");
+    return ack->job_id;
+  };
+  auto problem = [&](const std::string& id, const nlohmann::json& spec) {
+    const auto ack = client_.submit(id, spec.dump(), 5.0);
+    return !ack ? std::string("no ack") : ack->accepted ? std::string("accepted") : ack->problem;
+  };
+  const std::int64_t fit = finished("fit-2", io::foot_fit_job_spec(synthetic_tracks("P1-shoes-left-HMT", 0.0005)));
+  ASSERT_GT(fit, 0);
+  nlohmann::json walk = {{"scene", "walker"}, {"task", "optimise"}, {"speed", 1.3},
+                         {"foot", {{"fit", {{"job", fit}, {"model", "HMT"}}}}}};
+  const std::int64_t job = finished("walk-1", walk);
+  ASSERT_GT(job, 0);
+  const storage::JobRecord stored = *srv.store().job(job);
+  const nlohmann::json resolved = nlohmann::json::parse(stored.resolved_spec_json);
+  const auto hmt = nlohmann::json::parse(*srv.store().point_values(fit, {0, 1})).get<records::FootFitRecord>();
+  EXPECT_EQ(resolved["foot"]["model"], "HMT");
+  EXPECT_EQ(resolved["foot"]["l_HM"], hmt.foot["l_HM"]);  // the fitted foot, not a preset
+  EXPECT_EQ(resolved["foot"]["name"], "fitted HMT (job " + std::to_string(fit) + ")");
+  EXPECT_EQ(nlohmann::json::parse(stored.spec_json)["foot"], walk["foot"]);  // stored as submitted
+  const storage::QueryPage rows = storage::run_query(srv.store(), storage::query_for("solutions", job));
+  ASSERT_EQ(rows.rows.size(), 1u);
+  EXPECT_EQ(rows.rows[0]["status"], "converged");
+  std::printf("optimise on the fitted HMT foot: f_mech %.5f\n", rows.rows[0]["objective"].get<double>());
+
+  // What the reference may not name, each under its field.
+  walk["foot"] = {{"fit", {{"job", 999}}}};
+  EXPECT_EQ(problem("walk-2", walk), "foot.fit.job: there is no job 999 in this server's database");
+  walk["foot"] = {{"fit", {{"job", job}}}};
+  EXPECT_EQ(problem("walk-3", walk), "foot.fit.job: job " + std::to_string(job) + " is a walker optimise job, not a foot_fit job");
+  walk["foot"] = {{"fit", {{"job", fit}, {"model", "HMTT"}}}};
+  EXPECT_EQ(problem("walk-4", walk).rfind("foot.fit.model:", 0), 0u);
+  walk["foot"] = {{"fit", {{"job", fit}}}};
+  walk["foot"]["density"] = 30;
+  EXPECT_EQ(problem("walk-5", walk), "foot.density: unknown field (admissible: fit)");
 }
 
 TEST(FootFitSpec, MalformedTrialsAreRejectedNamingTheElement) {
