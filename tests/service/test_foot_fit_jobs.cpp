@@ -9,6 +9,7 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
+#include "point_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -77,6 +78,11 @@ TEST_F(FootFitJobs, StoresTheHmAndHmtFitsOfTheTrials) {
       EXPECT_NEAR(p.value, l_HM_true, 5 * p.standard_error + 1e-4);
     }
   EXPECT_EQ(hmt.foot["model"], "HMT");
+  const auto summary = client::point_summary(rows[1]);  // `cyclopt query` reads the same record
+  ASSERT_TRUE(summary);
+  EXPECT_EQ((*summary)["model"], "HMT");
+  EXPECT_EQ((*summary)["l_MT"], hmt.parameters[foot::hmt::l_MT].value);
+  EXPECT_FALSE(summary->contains("k_H"));  // fixed by the seed's bounds
   EXPECT_EQ(nlohmann::json(rows[1]["values"].get<records::FootFitRecord>()), rows[1]["values"]);  // the record round-trips (NaN != NaN: compare JSON)
 }
 
