@@ -4,7 +4,10 @@
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/foot_fit/ankle_track.hpp"
+#include "cyclopt/foot_fit/marker_file.hpp"
 #include "cyclopt/giant_swing/model.hpp"
+#include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
@@ -12,9 +15,11 @@
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/stored_foot_fit.hpp"
 #include "cyclopt/service/stored_start.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
+#include "cyclopt_channels.hpp"
 #include "progress_line.hpp"
 #include "row_table.hpp"
 #include "service_client.hpp"
@@ -46,10 +51,13 @@ results database file directly (read-only) when given --db FILE.
   submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
   submit --task foot_comparison --speeds LO:STEP:HI [--feet PRESET,PRESET,...]
          [--reference PRESET] [--starts N] ...
+  submit --task foot_fit --trials FILE.trc|FILE.csv,... [--name TEXT] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
                      spec, --speeds a walker job of TASK (default sweep); foot_comparison
                      sweeps --feet (default: the 16 of seed 001 section 9.2) and --reference
-                     (default point) with --starts starts per seed speed. Resent every
+                     (default point) with --starts starts per seed speed; foot_fit fits HM
+                     and HMT feet to the trials' ankle tracks (markers LMAL and MMAL, z up;
+                     other layouts: cyclopt-foot fit --job-spec FILE). Resent every
                      0.5 s until the server answers (same request id, so never queued
                      twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
@@ -91,7 +99,7 @@ struct Options {
   std::string command;
   std::vector<std::string> positional;
   std::string lcm_url, key_file, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
-      what = "solutions", result, feet, reference;
+      what = "solutions", result, feet, reference, trials;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
   double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan("");
@@ -125,7 +133,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 // Every option parse_args() knows, for "did you mean" on a misspelled one.
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
-    "--values", "--speeds", "--task", "--feet", "--reference", "--starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
     "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
@@ -156,6 +164,7 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--task") o.task = next();
     else if (a == "--feet") o.feet = next();
     else if (a == "--reference") o.reference = next();
+    else if (a == "--trials") o.trials = next();
     else if (a == "--starts") o.starts = static_cast<int>(number(next()));
     else if (a == "--name") o.name = next();
     else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
@@ -217,7 +226,30 @@ std::string foot_comparison_spec_text(const Options& o) {
   return spec.dump();
 }
 
-// The spec text of `submit`: the file's, or a foot_sweep / walker job / foot_comparison from flags.
+// foot_fit from flags: --trials (comma-separated .trc / CSV files), read here (a malformed file is
+// rejected naming file, line and column) and sent as their ankle tracks.
+std::string foot_fit_spec_text(const Options& o) {
+  if (o.trials.empty()) throw UsageError("submit --task foot_fit needs --trials FILE,FILE,...");
+  std::vector<cyclopt::foot_fit::AnkleTrack> tracks;
+  std::stringstream ss(o.trials);
+  try {
+    for (std::string file; std::getline(ss, file, ',');)
+      tracks.push_back(cyclopt::foot_fit::ankle_track(cyclopt::foot_fit::read_marker_file(file)));
+  } catch (const std::exception& e) {
+    throw LocalRejection(std::string("--trials ") + e.what() + "; nothing was sent");
+  }
+  nlohmann::json spec = cyclopt::io::foot_fit_job_spec(tracks);
+  if (!o.name.empty()) spec["name"] = o.name;
+  const std::string text = spec.dump();
+  if (text.size() > cyclopt::channels::kMaxSpecBytes)
+    throw LocalRejection("--trials: the spec of these trials is " + std::to_string(text.size()) + " bytes, a job spec may be " +
+                         std::to_string(cyclopt::channels::kMaxSpecBytes) +
+                         " (about 1000 ankle samples); fit them locally with cyclopt-foot fit");
+  return text;
+}
+
+// The spec text of `submit`: the file's, or a foot_sweep / walker job / foot_comparison /
+// foot_fit from flags.
 std::string spec_text(const Options& o) {
   if (!o.spec_file.empty()) {
     const std::string text = read_file(o.spec_file);
@@ -228,6 +260,8 @@ std::string spec_text(const Options& o) {
     }
   }
   if (o.task == "foot_comparison") return foot_comparison_spec_text(o);
+  if (o.task == "foot_fit") return foot_fit_spec_text(o);
+  if (!o.trials.empty()) throw UsageError("--trials needs --task foot_fit");
   if (!o.feet.empty() || !o.reference.empty()) throw UsageError("--feet and --reference need --task foot_comparison");
   const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
   if (o.foot.empty() || (!foot_sweep && o.speeds.empty()))
@@ -347,8 +381,11 @@ int watch(Session& s, const Options& o, std::int64_t job_id) {
 void validate_locally(const std::string& spec_json) {
   const nlohmann::json spec = nlohmann::json::parse(spec_json);
   try {
-    // A start naming a stored point is resolved by the server, which has the database.
-    cyclopt::service::validate_job_spec(cyclopt::service::without_stored_start(spec), cyclopt::service::builtin_job_kinds());
+    // A start naming a stored point and a foot naming a stored fit are resolved by the server,
+    // which has the database; with a stored fit the rest of the spec is left to the server too.
+    cyclopt::service::check_stored_foot_fit_references(spec);
+    if (!cyclopt::service::names_stored_foot_fit(spec))
+      cyclopt::service::validate_job_spec(cyclopt::service::without_stored_start(spec), cyclopt::service::builtin_job_kinds());
   } catch (const cyclopt::SpecError& e) {
     std::string hint;
     if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {

@@ -1,9 +1,11 @@
 #include "foot_fit_commands.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/foot_fit/ankle_track.hpp"
 #include "cyclopt/foot_fit/marker_csv_file.hpp"
+#include "cyclopt/foot_fit/marker_file.hpp"
 #include "cyclopt/foot_fit/rolling_foot_fit.hpp"
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "cyclopt/foot_fit/trc_file.hpp"
@@ -48,7 +50,9 @@ started from it (4.18-4.22). Units are SI on output (m, rad).
                        `cyclopt-foot --foot FILE` and as the "foot" of a walker job
   --plot-dir DIR       write fit_{hm,hmt}_ankle.{png,svg} (Fig. 4.3a/4.4a) and
                        fit_{hm,hmt}_outline.{png,svg} (Fig. 4.3b/4.4b)
-  --json               print the full report as JSON
+  --json               print the full report as JSON (the HM and HMT records a foot_fit job stores)
+  --job-spec FILE      write a foot_fit job spec of the server (README, "Fitting a foot") with the
+                       trials' ankle tracks inline instead of fitting: `cyclopt submit --spec FILE`
 Exit codes: 0 fitted and converged, 1 a fit did not converge, 2 bad usage or malformed file.
 )";
 
@@ -96,39 +100,6 @@ double number(const std::string& flag, const std::string& text) {
   return v;
 }
 
-nlohmann::json fit_json(const ff::FootFitResult& f) {
-  nlohmann::json params = nlohmann::json::array();
-  for (const ff::ParameterEstimate& e : f.estimates) {
-    nlohmann::json p = {{"name", e.name}, {"unit", e.unit}, {"value", e.value}, {"fixed", e.fixed}, {"at_bound", e.at_bound}};
-    p["lower"] = std::isfinite(e.lower) ? nlohmann::json(e.lower) : nlohmann::json(nullptr);
-    p["upper"] = std::isfinite(e.upper) ? nlohmann::json(e.upper) : nlohmann::json(nullptr);
-    p["standard_error"] = std::isfinite(e.standard_error) ? nlohmann::json(e.standard_error) : nlohmann::json(nullptr);
-    params.push_back(p);
-  }
-  nlohmann::json trials = nlohmann::json::array();
-  for (std::size_t k = 0; k < f.trials.size(); ++k)
-    trials.push_back({{"source", f.trials[k].source}, {"samples", f.trials[k].samples}, {"rms", f.trials[k].rms},
-                      {"max", f.trials[k].max}, {"x_off", f.x_off[k]}});
-  nlohmann::json convexity = nlohmann::json::array();
-  for (std::size_t r = 0; r < f.convexity.names.size(); ++r)
-    convexity.push_back({{"condition", f.convexity.names[r]}, {"value", f.convexity.values[r]}});
-  return {{"model", std::string(foot::to_string(f.model))},
-          {"converged", f.converged},
-          {"message", f.message},
-          {"iterations", f.iterations},
-          {"seconds", f.seconds},
-          {"samples", f.samples},
-          {"unknowns", f.unknowns},
-          {"rms", f.rms},
-          {"max_residual", f.max_residual},
-          {"noise_estimate", f.noise_estimate},
-          {"parameters", params},
-          {"trials", trials},
-          {"convex", f.convexity.convex},
-          {"convexity", convexity},
-          {"foot", io::to_json(f.spec())}};
-}
-
 void print_fit(const ff::FootFitResult& f) {
   std::printf("%s fit (%s): %s after %d iterations, %.3f s, %d samples, %d unknowns\n", std::string(foot::to_string(f.model)).c_str(),
               f.model == foot::FootModel::hm ? "eq. 4.16" : "eq. 4.21", f.converged ? "converged" : "NOT CONVERGED",
@@ -150,13 +121,6 @@ void print_fit(const ff::FootFitResult& f) {
       std::printf("    %-44s %12.4g\n", f.convexity.names[r].c_str(), f.convexity.values[r]);
 }
 
-ff::MarkerTrial read_trial(const std::string& path, const std::optional<std::string>& units) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".trc") return ff::read_trc(path);
-  if (ext == ".csv") return ff::read_marker_csv(path, units);
-  throw std::invalid_argument(path + ": unknown file type '" + ext + "' (.trc or .csv)");
-}
-
 }  // namespace
 
 int run_fit_command(int argc, char** argv) {
@@ -164,7 +128,7 @@ int run_fit_command(int argc, char** argv) {
   ff::AnkleTrackOptions track_options;
   std::vector<std::string> markers, files;
   std::optional<std::string> units;
-  std::string model = "both", save, plot_dir;
+  std::string model = "both", save, plot_dir, job_spec;
   bool json = false, toe_bound = true;
   try {
     while (a.more()) {
@@ -208,6 +172,8 @@ int run_fit_command(int argc, char** argv) {
         plot_dir = a.value(flag);
       } else if (flag == "--json") {
         json = true;
+      } else if (flag == "--job-spec") {
+        job_spec = a.value(flag);
       } else if (!flag.empty() && flag[0] == '-') {
         throw std::invalid_argument("unknown option '" + flag + "'");
       } else {
@@ -222,13 +188,17 @@ int run_fit_command(int argc, char** argv) {
   }
   try {
     std::vector<ff::AnkleTrack> tracks;
-    for (const std::string& f : files) tracks.push_back(ff::ankle_track(read_trial(f, units), track_options));
+    for (const std::string& f : files) tracks.push_back(ff::ankle_track(ff::read_marker_file(f, units), track_options));
+    if (!job_spec.empty()) {
+      std::ofstream out(job_spec);
+      if (!out) throw std::runtime_error(job_spec + ": cannot write the file");
+      out << io::foot_fit_job_spec(tracks, toe_bound).dump() << "\n";
+      std::fprintf(stderr, "cyclopt-foot fit: wrote the foot_fit job spec %s\n", job_spec.c_str());
+      return 0;
+    }
     ff::FootFitOptions options;
     const ff::CircleFitStart start = ff::circle_fit_start(tracks);
-    if (!toe_bound) {
-      options.hmt_bounds = ff::seed_bounds(foot::FootModel::hmt, start.z_min);
-      options.hmt_bounds->upper[foot::hmt::l_MT] = std::numeric_limits<double>::infinity();
-    }
+    options.toe_bound = toe_bound;
     ff::RollingFootFit fit;
     fit.start = start;
     fit.hm = ff::fit_hm(tracks, start, options);
@@ -247,7 +217,7 @@ int run_fit_command(int argc, char** argv) {
       out["start"] = {{"x_neg", start.heel.centre}, {"R_neg", start.heel.radius}, {"x_pos", start.forefoot.centre},
                       {"R_pos", start.forefoot.radius}, {"z_min", start.z_min}, {"h_F", start.hm[foot::hm::h_F]},
                       {"l_HA", start.hm[foot::hm::l_HA]}, {"l_HM", start.hm[foot::hm::l_HM]}};
-      for (const ff::FootFitResult* f : shown) out[f->model == foot::FootModel::hm ? "hm" : "hmt"] = fit_json(*f);
+      for (const ff::FootFitResult* f : shown) out[f->model == foot::FootModel::hm ? "hm" : "hmt"] = io::foot_fit_record(*f);
       std::cout << out.dump(2) << "\n";
     } else {
       for (const ff::AnkleTrack& t : tracks)

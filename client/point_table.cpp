@@ -1,5 +1,6 @@
 #include "point_table.hpp"
 
+#include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/records/gait_records.hpp"
 
 #include <cmath>
@@ -13,10 +14,33 @@ nlohmann::json member(const nlohmann::json& object, const char* key) {
 
 nlohmann::ordered_json number(double x) { return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json(); }
 
+// A foot_fit point (service/foot_fit_kind.hpp): the fit's model, residuals and shape parameters.
+std::optional<nlohmann::ordered_json> fit_summary(const nlohmann::json& row, const nlohmann::json& values) {
+  records::FootFitRecord fit;
+  try {
+    fit = values.get<records::FootFitRecord>();
+  } catch (const records::RecordError&) {
+    return std::nullopt;
+  }
+  nlohmann::ordered_json s;
+  s["curve"] = member(row, "curve");
+  s["point"] = member(row, "point");
+  s["model"] = fit.model;
+  s["samples"] = fit.samples;
+  s["rms_mm"] = number(1e3 * fit.rms);
+  s["max_mm"] = number(1e3 * fit.max_residual);
+  for (const records::FittedParameterRecord& p : fit.parameters)
+    if (!p.fixed) s[p.name] = number(p.value);
+  s["convex"] = fit.convex;
+  s["status"] = member(row, "status");
+  return s;
+}
+
 }  // namespace
 
 std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   const nlohmann::json values = member(row, "values");
+  if (records::is_foot_fit(values)) return fit_summary(row, values);
   const nlohmann::json gait_json = member(values, "gait");
   if (!gait_json.is_object()) return std::nullopt;
   records::GaitRecord gait;

@@ -30,6 +30,15 @@ done
 grep -q "converged" "$dir/fit_trc.txt"
 grep -q "kinematics" "$dir/fit_trc.txt"
 
+# The same trials as the inline ankle tracks of a foot_fit job spec (service/foot_fit_kind.hpp).
+"$foot_cli" fit "$dir"/trials/trial{1,2,3}.csv --job-spec "$dir/job.json" 2> /dev/null
+python3 - "$dir/job.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["task"] == "foot_fit" and len(s["trials"]) == 3, s.keys()
+assert all(len(t["x"]) == len(t["z"]) >= 10 for t in s["trials"])
+PY
+
 # A NaN in row 5 (line 9 of the .trc), column 4 (LMAL Y).
 awk 'NR == 9 { $4 = "nan" } { print }' OFS='\t' "$dir/trials/trial1.trc" > "$dir/bad.trc"
 set +e

@@ -275,7 +275,8 @@ FootFitResult fit_hmt(const std::vector<AnkleTrack>& tracks, const FootFitResult
   p[T::k_HM] = hm.parameters[H::k_HM];
   p[T::k_MT] = hm.parameters[H::k_HM];
   p[T::k_T] = hm.parameters[H::k_M];
-  const FitBounds b = o.hmt_bounds ? *o.hmt_bounds : seed_bounds(foot::FootModel::hmt, z_min);
+  FitBounds b = o.hmt_bounds ? *o.hmt_bounds : seed_bounds(foot::FootModel::hmt, z_min);
+  if (!o.hmt_bounds && !o.toe_bound) b.upper[T::l_MT] = kInf;
   // HMT contains HM: with l_MT = 0 the T transition is HM's M transition (eq. 3.23d -> 3.20c).
   // Besides the seed's start, two from the HM solution so embedded: a short toe (l_MT = l_HM/100,
   // taken from the sole, so toe angle and rounding are not degenerate) and l_MT = 0 exactly (the

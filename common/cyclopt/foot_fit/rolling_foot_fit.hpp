@@ -81,6 +81,7 @@ struct FootFitOptions {
   ArrowOptions solver;
   std::optional<FitBounds> hm_bounds;   // default seed_bounds(hm, z_min)
   std::optional<FitBounds> hmt_bounds;  // default seed_bounds(hmt, z_min)
+  bool toe_bound = true;                // false: the default HMT box without l_MT <= z_min (4.18b)
 };
 
 // The HM fit (4.16) from the circle-fit start (k_HM = 0.1, section 4.2).

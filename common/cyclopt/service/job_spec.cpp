@@ -77,7 +77,8 @@ const std::vector<std::string>& known_scenes() {
 }
 const std::vector<std::string>& known_tasks() {
   static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart", "continuation",
-                                            "sweep",      "foot_sweep",      "foot_comparison", "giant_swing"};
+                                            "sweep",      "foot_sweep",      "foot_comparison", "foot_fit",
+                                            "giant_swing"};
   return v;
 }
 const std::vector<std::string>& known_objectives() {

@@ -2,6 +2,7 @@
 
 #include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/stored_foot_fit.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/walker/virtual_constraints.hpp"
 
@@ -47,7 +48,7 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
   const std::string job_name = "job " + std::to_string(job_id);
   const std::optional<storage::JobRecord> stored = store.job(job_id);
   if (!stored) throw SpecError("start.job", "there is no " + job_name + " in this server's database");
-  const nlohmann::json stored_spec = nlohmann::json::parse(stored->spec_json, nullptr, false);
+  const nlohmann::json stored_spec = nlohmann::json::parse(runnable_spec_text(*stored), nullptr, false);
   if (stored->scene != "walker" || !stored_spec.is_object() || !stored_spec.contains("foot"))
     throw SpecError("start.job", job_name + " is a " + stored->scene + " " + stored->task + " job, not a walker gait job");
   const std::string where = "(curve " + std::to_string(key.curve_index) + ", point " + std::to_string(key.point_index) + ")";
@@ -89,8 +90,8 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
 
 std::string runnable_spec_text(const storage::JobRecord& job) {
   const nlohmann::json spec = nlohmann::json::parse(job.spec_json, nullptr, false);
-  return spec.is_object() && names_stored_point(spec) && !job.resolved_spec_json.empty() ? job.resolved_spec_json
-                                                                                         : job.spec_json;
+  const bool references = spec.is_object() && (names_stored_point(spec) || names_stored_foot_fit(spec));
+  return references && !job.resolved_spec_json.empty() ? job.resolved_spec_json : job.spec_json;
 }
 
 }  // namespace cyclopt::service

@@ -30,8 +30,8 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
 nlohmann::json without_stored_start(nlohmann::json spec);
 
 // The text a stored job is run from where the database is not at hand (a resumed job, a
-// cyclopt-worker): its spec as submitted, or, when its start names a stored point, its resolved
-// spec, where the start is that point's x.
+// cyclopt-worker): its spec as submitted, or, when its start names a stored point or a foot a
+// stored fit (stored_foot_fit.hpp), its resolved spec, where they are the point's x and the foot.
 std::string runnable_spec_text(const storage::JobRecord& job);
 
 }  // namespace cyclopt::service
