@@ -9,6 +9,8 @@
 #include "cyclopt/giant_swing/model.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_comparison_figures.hpp"
+#include "cyclopt/plot/foot_design_figures.hpp"
+#include "cyclopt/plot/foot_design_report.hpp"
 #include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
@@ -88,10 +90,14 @@ results database file directly (read-only) when given --db FILE.
                      foot_comparison job: f_mech of every foot with the best envelope,
                      Fig. 9.19a, and the foot outlines, Fig. 9.8); foot-fit (a foot_fit job:
                      measured against model ankle and the fitted outline per converged fit,
-                     Fig. 4.3/4.4); or giant-swing --result FILE
+                     Fig. 4.3/4.4); foot-design (a foot_design job: the designs over the
+                     start foot, Fig. 10.5/10.6, f_mech per density with the start foot and
+                     point feet, Fig. 10.7, the best design's gait, Fig. 10.4); or
+                     giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
   report JOB [--out FILE.html]
-                     one self-contained HTML page: spec, solved points, all figures
+                     one self-contained HTML page: spec, solved points (per density for a
+                     foot_design job), all figures
                      (default FILE: jobJOB.html)
 
 Output of status, list, query: aligned table (times in ISO 8601 UTC), or --wide / --csv / --json.
@@ -524,6 +530,13 @@ int plot(Session& s, const Options& o) {
                                                   &not_drawn);
     for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
     if (figures.empty()) throw std::invalid_argument("plot foot-fit: no converged fit to draw");
+  } else if (kind == "foot-design") {
+    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-design needs one --job JOB or --from FILE.json");
+    std::vector<std::string> not_drawn;
+    figures = cyclopt::plot::foot_design_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
+                                                                : job_document(s, o.jobs.front()),
+                                                 &not_drawn);
+    for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
   } else if (kind == "foot-comparison") {
     if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-comparison needs one --job JOB or --from FILE.json");
     figures = cyclopt::plot::foot_comparison_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
@@ -552,7 +565,10 @@ int plot(Session& s, const Options& o) {
 int report(Session& s, const Options& o) {
   const std::int64_t id = job_argument(o);
   const std::string path = o.out.empty() ? "job" + std::to_string(id) + ".html" : o.out;
-  cyclopt::plot::write_html(cyclopt::plot::walker_job_report(job_document(s, id)), path);
+  const nlohmann::json doc = job_document(s, id);
+  cyclopt::plot::write_html(doc.value("task", "") == "foot_design" ? cyclopt::plot::foot_design_report(doc)
+                                                                   : cyclopt::plot::walker_job_report(doc),
+                            path);
   std::printf("report of job %lld: %s\n", static_cast<long long>(id), path.c_str());
   return kOk;
 }

@@ -4,6 +4,8 @@
 // free-foot continuation, the fixed-foot sweeps and one records::DesignedFootRecord per density
 // in the layout of records/foot_design_records.hpp.
 #include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/plot/foot_design_figures.hpp"
+#include "cyclopt/plot/foot_design_report.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "memq_server_fixture.hpp"
@@ -11,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <map>
 #include <set>
@@ -201,6 +204,34 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   EXPECT_NEAR(design.saving_vs_point, 1 - high / point, 1e-12);
   std::printf("rho 10: design f %.5f at 2.3 m/s, mean f_mech %.5f (start foot %.5f, point feet %.5f), savings %.1f %% / %.1f %%\n",
               design.design_objective, high, start, point, 100 * design.saving_vs_start, 100 * design.saving_vs_point);
+
+  // `cyclopt plot foot-design` and `cyclopt report` of the job, from the document `cyclopt export` writes.
+  nlohmann::json doc = storage::run_query(srv.store(), storage::query_for("job", job)).rows.at(0);
+  for (const char* what : storage::kJobParts) {
+    storage::QueryRequest r = storage::query_for(what, job);
+    r.limit = 1000;
+    doc[what] = storage::run_query(srv.store(), r).rows;
+  }
+  std::vector<std::string> not_drawn;
+  const std::vector<plot::Figure> figures = plot::foot_design_figures(doc, &not_drawn);
+  for (const std::string& why : not_drawn) std::printf("  not drawn: %s\n", why.c_str());
+  ASSERT_EQ(figures.size(), 3u);
+  EXPECT_EQ(figures[0].name, "foot_design_outlines");
+  EXPECT_EQ(figures[1].name, "foot_design_cost");
+  EXPECT_EQ(figures[2].name, "foot_design_gait");
+  const auto& chart = std::get<plot::LineChart>(figures[1].drawing);
+  ASSERT_EQ(chart.series.size(), 3u);  // start foot, point feet, the rho 10 design
+  EXPECT_EQ(chart.series[2].y, (std::vector<double>{curves[records::high_design_curve(0)][0]["values"]["f_mech"].get<double>(),
+                                                    curves[records::high_design_curve(0)][1]["values"]["f_mech"].get<double>()}));
+  const std::string html = plot::to_html(plot::foot_design_report(doc));
+  EXPECT_NE(html.find("Designs per density"), std::string::npos);
+  EXPECT_NE(html.find("best design"), std::string::npos);
+  // CYCLOPT_TEST_FIGURE_DIR keeps the pictures and the report, to look at them.
+  const std::string keep = std::getenv("CYCLOPT_TEST_FIGURE_DIR") ? std::getenv("CYCLOPT_TEST_FIGURE_DIR") : "";
+  const std::string out = keep.empty() ? (dir_ / "figures").string() : keep;
+  for (const plot::Figure& f : figures)
+    for (const std::string& path : plot::write_figure(f, out)) EXPECT_GT(std::filesystem::file_size(path), 1000u) << path;
+  plot::write_html(plot::foot_design_report(doc), out + "/report.html");
 }
 
 // Issue 15 item 3: an interrupted study resumes without recomputing stored work. The server is

@@ -20,23 +20,29 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   const std::string foot = r.job.foot.name.empty() ? std::string(foot::to_string(r.job.foot.model)) : r.job.foot.name;
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
-  std::map<std::pair<int, int>, const nlohmann::json*> trajectories;  // into doc
+  r.points = gait_points(doc, 0);
+  return r;
+}
+
+std::vector<GaitPoint> gait_points(const nlohmann::json& doc, int curve) {
+  std::map<int, const nlohmann::json*> trajectories;  // by point, into doc
   const nlohmann::json none = nlohmann::json::array();
   for (const nlohmann::json& t : doc.contains("trajectories") ? doc["trajectories"] : none)
-    if (t.value("format", "") == "json") trajectories[{t.value("curve", 0), t.value("point", 0)}] = &t.at("data");
-  for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
-    if (s.value("curve", 0) != 0) continue;
+    if (t.value("format", "") == "json" && t.value("curve", 0) == curve) trajectories[t.value("point", 0)] = &t.at("data");
+  std::vector<GaitPoint> points;
+  for (const nlohmann::json& s : doc.contains("solutions") ? doc["solutions"] : none) {
+    if (s.value("curve", 0) != curve) continue;
     GaitPoint p;
     p.speed = s.at("parameter").is_number() ? s["parameter"].get<double>() : std::nan("");
     p.status = s.value("status", "");
     const auto values = s.at("values").get<records::WalkerPointRecord>();
     if (values.gait) p.gait = *values.gait;
     p.converged = records::solved(values);
-    const auto t = trajectories.find({0, s.value("point", 0)});
+    const auto t = trajectories.find(s.value("point", 0));
     if (t != trajectories.end()) p.trajectory = t->second->get<records::GaitTrajectoryRecord>();
-    r.points.push_back(std::move(p));
+    points.push_back(std::move(p));
   }
-  return r;
+  return points;
 }
 
 const GaitPoint* point_near(const WalkerJobResults& r, double speed) {

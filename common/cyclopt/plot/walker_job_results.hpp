@@ -36,6 +36,11 @@ struct WalkerJobResults {
 // records::RecordError when a stored point does not follow the contract.
 WalkerJobResults walker_job_results(const nlohmann::json& document);
 
+// The gaits of one curve of a job document in point order (values a records::WalkerPointRecord,
+// trajectories a records::GaitTrajectoryRecord): curve 0 of a walker job, a sweep curve of a
+// foot_design job. Throws records::RecordError when a stored point does not follow the contract.
+std::vector<GaitPoint> gait_points(const nlohmann::json& document, int curve);
+
 // The converged point whose speed is closest to `speed` (any converged point when NaN) that has a
 // trajectory; nullptr if there is none.
 const GaitPoint* point_near(const WalkerJobResults& r, double speed);

@@ -367,6 +367,14 @@ JobCost design_cost(const DesignJob& j) {
 
 }  // namespace
 
+FootDesignSetup foot_design_setup(const nlohmann::json& spec) {
+  const DesignJob j = parse_design_job(spec, parse_common_job_fields(spec));
+  FootDesignSetup setup{j.walker, j.design_speed};
+  setup.walker.foot = j.start_foot;
+  setup.walker.problem.free_parameters.clear();
+  return setup;
+}
+
 JobKind foot_design_kind() {
   std::vector<std::string> fields;
   for (const std::string& f : walker_job_fields(true))

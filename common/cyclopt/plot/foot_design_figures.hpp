@@ -1,0 +1,55 @@
+#pragma once
+// Figures of a foot_design job (service/foot_design_kind.hpp; seed 001 section 10.2), read from
+// the job document `cyclopt export` writes through records/foot_design_records.hpp:
+//   foot-design-outlines  the design of every density with an admissible one, over the start foot,
+//                         ankles at one point (Fig. 10.5/10.6)
+//   foot-design-cost      f_mech over speed of each density's design (its fixed-foot sweep), with
+//                         the start foot and point feet (Fig. 10.7)
+//   foot-design-gait      the stroboscope of the best design's gait at the design speed (Fig. 10.4)
+// Densities without an admissible design, and sweeps without a point, are left out and named.
+
+#include "cyclopt/foot/foot_spec.hpp"
+#include "cyclopt/plot/walker_figures.hpp"
+#include "cyclopt/records/foot_design_records.hpp"
+#include "cyclopt/service/foot_design_kind.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cyclopt::plot {
+
+struct SweptCurve {
+  std::string name;
+  std::vector<double> speed, f_mech;  // the grid speeds with a point
+};
+
+struct DesignedDensity {
+  records::DesignedFootRecord record;
+  foot::FootSpec design;  // when record.admissible: the start foot's model with the design's parameters and density
+  SweptCurve sweep;       // the design's fixed-foot sweep
+};
+
+struct FootDesignCurves {
+  std::int64_t id = 0;
+  foot::FootSpec start;   // the start foot (its own masses)
+  SweptCurve start_foot, point_feet;
+  std::vector<DesignedDensity> densities;  // in the order of the spec's densities
+  int best = -1;          // index into densities: the admissible design with the largest saving vs the start foot
+  nlohmann::json spec;    // as stored (the resolved spec where the job has one)
+  service::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
+};
+
+// Throws std::invalid_argument when the document is not a foot_design job or has no density
+// stored yet, records::RecordError when a stored point does not follow the contract.
+FootDesignCurves foot_design_curves(const nlohmann::json& document);
+
+LineChart foot_design_cost_chart(const FootDesignCurves& c);
+Scene foot_design_outlines_scene(const FootDesignCurves& c);
+
+// Every figure that can be drawn; with `not_drawn`, what was left out and why.
+std::vector<Figure> foot_design_figures(const nlohmann::json& document, std::vector<std::string>* not_drawn = nullptr);
+
+}  // namespace cyclopt::plot

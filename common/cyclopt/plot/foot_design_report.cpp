@@ -1,0 +1,108 @@
+#include "cyclopt/plot/foot_design_report.hpp"
+
+#include "cyclopt/foot/foot_parameters.hpp"
+#include "cyclopt/plot/foot_design_figures.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace cyclopt::plot {
+namespace {
+
+std::string number(double v, const char* format) {
+  if (!std::isfinite(v)) return "-";
+  char b[48];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : "; ") + s;
+  return out.empty() ? "none" : out;
+}
+
+ReportTable outcome_table(const FootDesignCurves& c) {
+  ReportTable t;
+  t.header = {"rho (kg/m^2)", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling",
+              "f at design speed", "speeds reached", "mean f_mech", "saving vs start foot", "saving vs point feet",
+              "wall (s)"};
+  for (const DesignedDensity& d : c.densities) {
+    const records::DesignedFootRecord& r = d.record;
+    t.rows.push_back({number(r.density, "%g"),
+                      r.admissible ? (&d - c.densities.data() == c.best ? "best design" : "design")
+                                   : "no admissible design: " + r.reason.value_or("-"),
+                      std::to_string(r.kkt_starts) + " / " + std::to_string(r.starts),
+                      std::to_string(r.admissible_optima) + " / " + std::to_string(r.stilt_optima) + " / " +
+                          std::to_string(r.wheel_optima) + " / " + std::to_string(r.no_rolling_optima),
+                      number(r.design_objective, "%.5f"),
+                      std::to_string(r.speeds_reached) + " / " + std::to_string(r.speeds), number(r.mean_f_mech, "%.5f"),
+                      number(100 * r.saving_vs_start, "%.1f %%"), number(100 * r.saving_vs_point, "%.1f %%"),
+                      number(r.seconds, "%.0f")});
+  }
+  return t;
+}
+
+// The designed feet: one column per parameter of the start foot's model, then what follows them.
+ReportTable design_table(const FootDesignCurves& c) {
+  ReportTable t;
+  t.header = {"rho (kg/m^2)"};
+  const auto layout = foot::parameter_layout(c.start.model);
+  for (const foot::ParameterInfo& p : layout) t.header.push_back(std::string(p.name) + " (" + std::string(p.unit) + ")");
+  for (const char* h : {"m_F (kg)", "r_F (mm)", "J_F (kg m^2)", "theta_F0 (rad)", "active bounds (10.1)"}) t.header.push_back(h);
+  for (const DesignedDensity& d : c.densities) {
+    if (!d.record.admissible) continue;
+    const records::DesignedFoot& f = d.record.design;
+    std::vector<std::string> row{number(d.record.density, "%g")};
+    for (const foot::ParameterInfo& p : layout) {
+      const auto it = f.parameters.find(std::string(p.name));
+      row.push_back(it == f.parameters.end() ? "-" : number(it->second, "%.4g"));
+    }
+    for (const std::string& v : {number(f.m_F, "%.3f"), number(1e3 * f.r_F, "%.1f"), number(f.J_F, "%.2e"),
+                                 number(f.theta_F0, "%.3f"), joined(d.record.active_bounds)})
+      row.push_back(v);
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+}  // namespace
+
+Report foot_design_report(const nlohmann::json& doc) {
+  const FootDesignCurves c = foot_design_curves(doc);
+  Report report;
+  report.title = "cyclopt job " + std::to_string(c.id) + ": foot design from " + c.start.name;
+  report.subtitle = "walker foot_design, state " + doc.value("state", std::string()) + ", " +
+                    std::to_string(doc.value("points_stored", 0)) + " points stored, " +
+                    number(doc.value("run_seconds", nlohmann::json()).is_number() ? doc["run_seconds"].get<double>() : std::nan(""),
+                           "%.1f") +
+                    " s of computation";
+  ReportSection spec;
+  spec.heading = "Job specification (resolved)";
+  spec.code = c.spec.dump(2);
+  if (!doc.value("error", std::string()).empty()) spec.text = "outcome: " + doc["error"].get<std::string>();
+  ReportSection designs;
+  designs.heading = "Designs per density";
+  designs.text = "Per density: the design multistart at the design speed (foot and gait free, mass properties following "
+                 "the geometry, appendix E), its optima by class (design_class.hpp), the best admissible optimum as the "
+                 "design, and the fixed-foot sweep of that design: mean f_mech (eq. 5.102) over the speeds it reached and "
+                 "the savings against the start foot (its own masses) and point feet over the speeds both reach.";
+  if (c.best >= 0) {
+    const records::DesignedFootRecord& b = c.densities[static_cast<std::size_t>(c.best)].record;
+    designs.text += " Best: rho " + number(b.density, "%g") + " kg/m^2, saving " + number(100 * b.saving_vs_start, "%.1f") +
+                    " % against the start foot and " + number(100 * b.saving_vs_point, "%.1f") + " % against point feet.";
+  } else {
+    designs.text += " No density has an admissible design.";
+  }
+  designs.tables.push_back(outcome_table(c));
+  designs.tables.push_back(design_table(c));
+  ReportSection figures;
+  figures.heading = "Figures";
+  std::vector<std::string> not_drawn;
+  for (const Figure& f : foot_design_figures(doc, &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
+  for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
+  report.sections = {spec, designs, figures};
+  return report;
+}
+
+}  // namespace cyclopt::plot
