@@ -516,45 +516,29 @@ int plot(Session& s, const Options& o) {
   const std::string& kind = o.positional[0];
   const std::string dir = o.out.empty() ? "." : o.out;
   std::vector<cyclopt::plot::Figure> figures;
+  std::vector<std::string> not_drawn;  // what the kind left out, and why
   if (kind == "giant-swing") {
     if (o.result.empty()) throw UsageError("plot giant-swing needs --result FILE (cyclopt-giant-swing output)");
     cyclopt::plot::Scene scene = cyclopt::plot::giant_swing_stroboscope(cyclopt::giant_swing::appendix_b_gymnast(),
                                                                         nlohmann::json::parse(read_file(o.result)));
     const cyclopt::plot::RenderOptions size = cyclopt::plot::fitted_options(scene, 800);
     figures.push_back({"giant_swing_stroboscope", "Giant swing stroboscope (seed 000 Fig. 5.5)", std::move(scene), size});
-  } else if (kind == "foot-fit") {
-    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-fit needs one --job JOB or --from FILE.json");
-    std::vector<std::string> not_drawn;
-    figures = cyclopt::plot::foot_fit_job_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
-                                                                 : job_document(s, o.jobs.front()),
-                                                  &not_drawn);
-    for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
-    if (figures.empty()) throw std::invalid_argument("plot foot-fit: no converged fit to draw");
-  } else if (kind == "foot-design") {
-    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-design needs one --job JOB or --from FILE.json");
-    std::vector<std::string> not_drawn;
-    figures = cyclopt::plot::foot_design_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
-                                                                : job_document(s, o.jobs.front()),
-                                                 &not_drawn);
-    for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
-  } else if (kind == "foot-comparison") {
-    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-comparison needs one --job JOB or --from FILE.json");
-    figures = cyclopt::plot::foot_comparison_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
-                                                                    : job_document(s, o.jobs.front()));
+  } else if (kind == "foot-fit" || kind == "foot-design" || kind == "foot-comparison") {
+    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot " + kind + " needs one --job JOB or --from FILE.json");
+    const nlohmann::json doc = o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front())) : job_document(s, o.jobs.front());
+    if (kind == "foot-fit") figures = cyclopt::plot::foot_fit_job_figures(doc, &not_drawn);
+    else if (kind == "foot-design") figures = cyclopt::plot::foot_design_figures(doc, &not_drawn);
+    else figures = cyclopt::plot::foot_comparison_figures(doc);
   } else {
     if (o.jobs.empty() && o.from.empty()) throw UsageError("plot " + kind + " needs --job JOB or --from FILE.json");
     std::vector<cyclopt::plot::WalkerJobResults> jobs;
     for (std::int64_t id : o.jobs) jobs.push_back(cyclopt::plot::walker_job_results(job_document(s, id)));
     for (const std::string& f : o.from) jobs.push_back(cyclopt::plot::walker_job_results(nlohmann::json::parse(read_file(f))));
-    if (kind == "all") {
-      std::vector<std::string> not_drawn;
-      figures = cyclopt::plot::walker_figures(jobs, o.speed, &not_drawn);
-      for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
-      if (figures.empty()) throw std::invalid_argument("plot all: nothing to draw");
-    } else {
-      figures.push_back(cyclopt::plot::walker_figure(kind, jobs, o.speed));
-    }
+    if (kind == "all") figures = cyclopt::plot::walker_figures(jobs, o.speed, &not_drawn);
+    else figures.push_back(cyclopt::plot::walker_figure(kind, jobs, o.speed));
   }
+  for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
+  if (figures.empty()) throw std::invalid_argument("plot " + kind + ": nothing to draw");
   for (const cyclopt::plot::Figure& f : figures) {
     const std::vector<std::string> paths = cyclopt::plot::write_figure(f, dir);
     std::printf("%s: %s %s\n", f.caption.c_str(), paths[0].c_str(), paths[1].c_str());

@@ -81,10 +81,7 @@ LineChart foot_comparison_chart(const FootComparisonCurves& c) {
     chart.series.push_back({"best foot per speed (envelope, " + percent(c.envelope_saving) + ")", c.envelope_speed,
                             c.envelope_f_mech, true, false, Color{0.55, 0.0, 0.0, 1}});
   if (chart.series.empty()) throw std::invalid_argument("foot comparison: no foot has a point to draw");
-  double hi = 0;
-  for (const Series& s : chart.series)
-    for (double y : s.y) hi = std::max(hi, y);
-  chart.y_range = Range{0.0, hi > 0 ? 1.08 * hi : 1.0};
+  start_at_zero(chart);
   return chart;
 }
 

@@ -105,10 +105,7 @@ LineChart foot_design_cost_chart(const FootDesignCurves& c) {
                             d.sweep.speed, d.sweep.f_mech, true, false, palette(colour++)});
   }
   if (chart.series.empty()) throw std::invalid_argument("foot design: no sweep has a point to draw");
-  double hi = 0;
-  for (const Series& s : chart.series)
-    for (double y : s.y) hi = std::max(hi, y);
-  chart.y_range = Range{0.0, hi > 0 ? 1.08 * hi : 1.0};
+  start_at_zero(chart);
   return chart;
 }
 

@@ -9,13 +9,6 @@
 namespace cyclopt::plot {
 namespace {
 
-std::string number(double v, const char* format) {
-  if (!std::isfinite(v)) return "-";
-  char b[48];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : "; ") + s;
@@ -29,16 +22,16 @@ ReportTable outcome_table(const FootDesignCurves& c) {
               "wall (s)"};
   for (const DesignedDensity& d : c.densities) {
     const records::DesignedFootRecord& r = d.record;
-    t.rows.push_back({number(r.density, "%g"),
+    t.rows.push_back({report_number(r.density, "%g"),
                       r.admissible ? (&d - c.densities.data() == c.best ? "best design" : "design")
                                    : "no admissible design: " + r.reason.value_or("-"),
                       std::to_string(r.kkt_starts) + " / " + std::to_string(r.starts),
                       std::to_string(r.admissible_optima) + " / " + std::to_string(r.stilt_optima) + " / " +
                           std::to_string(r.wheel_optima) + " / " + std::to_string(r.no_rolling_optima),
-                      number(r.design_objective, "%.5f"),
-                      std::to_string(r.speeds_reached) + " / " + std::to_string(r.speeds), number(r.mean_f_mech, "%.5f"),
-                      number(100 * r.saving_vs_start, "%.1f %%"), number(100 * r.saving_vs_point, "%.1f %%"),
-                      number(r.seconds, "%.0f")});
+                      report_number(r.design_objective, "%.5f"),
+                      std::to_string(r.speeds_reached) + " / " + std::to_string(r.speeds), report_number(r.mean_f_mech, "%.5f"),
+                      report_number(100 * r.saving_vs_start, "%.1f %%"), report_number(100 * r.saving_vs_point, "%.1f %%"),
+                      report_number(r.seconds, "%.0f")});
   }
   return t;
 }
@@ -53,13 +46,13 @@ ReportTable design_table(const FootDesignCurves& c) {
   for (const DesignedDensity& d : c.densities) {
     if (!d.record.admissible) continue;
     const records::DesignedFoot& f = d.record.design;
-    std::vector<std::string> row{number(d.record.density, "%g")};
+    std::vector<std::string> row{report_number(d.record.density, "%g")};
     for (const foot::ParameterInfo& p : layout) {
       const auto it = f.parameters.find(std::string(p.name));
-      row.push_back(it == f.parameters.end() ? "-" : number(it->second, "%.4g"));
+      row.push_back(it == f.parameters.end() ? "-" : report_number(it->second, "%.4g"));
     }
-    for (const std::string& v : {number(f.m_F, "%.3f"), number(1e3 * f.r_F, "%.1f"), number(f.J_F, "%.2e"),
-                                 number(f.theta_F0, "%.3f"), joined(d.record.active_bounds)})
+    for (const std::string& v : {report_number(f.m_F, "%.3f"), report_number(1e3 * f.r_F, "%.1f"), report_number(f.J_F, "%.2e"),
+                                 report_number(f.theta_F0, "%.3f"), joined(d.record.active_bounds)})
       row.push_back(v);
     t.rows.push_back(std::move(row));
   }
@@ -74,7 +67,7 @@ Report foot_design_report(const nlohmann::json& doc) {
   report.title = "cyclopt job " + std::to_string(c.id) + ": foot design from " + c.start.name;
   report.subtitle = "walker foot_design, state " + doc.value("state", std::string()) + ", " +
                     std::to_string(doc.value("points_stored", 0)) + " points stored, " +
-                    number(doc.value("run_seconds", nlohmann::json()).is_number() ? doc["run_seconds"].get<double>() : std::nan(""),
+                    report_number(doc.value("run_seconds", nlohmann::json()).is_number() ? doc["run_seconds"].get<double>() : std::nan(""),
                            "%.1f") +
                     " s of computation";
   ReportSection spec;
@@ -89,8 +82,8 @@ Report foot_design_report(const nlohmann::json& doc) {
                  "the savings against the start foot (its own masses) and point feet over the speeds both reach.";
   if (c.best >= 0) {
     const records::DesignedFootRecord& b = c.densities[static_cast<std::size_t>(c.best)].record;
-    designs.text += " Best: rho " + number(b.density, "%g") + " kg/m^2, saving " + number(100 * b.saving_vs_start, "%.1f") +
-                    " % against the start foot and " + number(100 * b.saving_vs_point, "%.1f") + " % against point feet.";
+    designs.text += " Best: rho " + report_number(b.density, "%g") + " kg/m^2, saving " + report_number(100 * b.saving_vs_start, "%.1f") +
+                    " % against the start foot and " + report_number(100 * b.saving_vs_point, "%.1f") + " % against point feet.";
   } else {
     designs.text += " No density has an admissible design.";
   }

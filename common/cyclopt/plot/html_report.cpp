@@ -3,6 +3,8 @@
 #include "cyclopt/plot/svg_ids.hpp"
 
 #include <atomic>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -52,6 +54,17 @@ std::string html_escape(const std::string& s) {
     }
   }
   return out;
+}
+
+std::string report_number(double v, const char* format) {
+  if (!std::isfinite(v)) return "-";
+  char b[48];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+std::string report_number(const nlohmann::json& v, const char* format) {
+  return report_number(v.is_number() ? v.get<double>() : std::nan(""), format);
 }
 
 std::string to_html(const Report& report) {

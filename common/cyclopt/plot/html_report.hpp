@@ -5,6 +5,8 @@
 #include "cyclopt/plot/line_chart.hpp"
 #include "cyclopt/plot/scene.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -39,6 +41,9 @@ std::string svg_of(const LineChart& chart, const RenderOptions& options = {});
 std::string svg_of(const Scene& scene, const RenderOptions& options = {});
 
 std::string html_escape(const std::string& s);
+// A table cell: `v` in the printf `format`, "-" when v is not finite (or, for JSON, not a number).
+std::string report_number(double v, const char* format);
+std::string report_number(const nlohmann::json& v, const char* format);
 std::string to_html(const Report& report);
 // Writes to_html(report) to `path`; throws std::runtime_error if it cannot.
 void write_html(const Report& report, const std::string& path);

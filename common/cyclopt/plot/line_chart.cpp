@@ -7,6 +7,15 @@
 #include <stdexcept>
 
 namespace cyclopt::plot {
+
+void start_at_zero(LineChart& chart) {
+  double hi = 0;
+  for (const Series& s : chart.series)
+    for (double y : s.y)
+      if (std::isfinite(y)) hi = std::max(hi, y);
+  chart.y_range = Range{0.0, hi > 0 ? 1.08 * hi : 1.0};
+}
+
 void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
   std::vector<double> xs, ys;
   for (const Series& s : chart.series) {

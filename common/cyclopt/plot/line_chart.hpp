@@ -28,6 +28,10 @@ struct RenderOptions {
   double width = 900, height = 600;
 };
 
+// For quantities >= 0: the y axis from zero to 8 % above the largest finite value, so curves
+// compare by ratio at a glance.
+void start_at_zero(LineChart& chart);
+
 // Writes the chart to `path` (.png, .svg or .pdf). Throws std::invalid_argument for series with
 // mismatched lengths or no finite point at all, std::runtime_error when the file cannot be written.
 void render(const LineChart& chart, const std::string& path, const RenderOptions& options = {});

@@ -53,15 +53,6 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
   return chart;
 }
 
-// Quantities that are >= 0 get a y axis from zero, so curves compare by ratio at a glance.
-void start_at_zero(LineChart& chart) {
-  double hi = 0;
-  for (const Series& s : chart.series)
-    for (double y : s.y)
-      if (std::isfinite(y)) hi = std::max(hi, y);
-  chart.y_range = Range{0.0, hi > 0 ? 1.08 * hi : 1.0};
-}
-
 // Joint names of q_b (eq. 5.3) for 4 (point feet) or 6 joints.
 const char* joint_name(int j) {
   static const char* names[] = {"H1 stance hip", "H2 swing hip", "K1 stance knee", "K2 swing knee",

@@ -9,17 +9,6 @@
 namespace cyclopt::plot {
 namespace {
 
-std::string number(double v, const char* format) {
-  if (!std::isfinite(v)) return "-";
-  char b[48];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
-std::string number(const nlohmann::json& v, const char* format) {
-  return number(v.is_number() ? v.get<double>() : std::nan(""), format);
-}
-
 ReportTable result_table(const WalkerJobResults& r) {
   ReportTable t;
   t.header = {"v target (m/s)", "status", "converged", "f_mech (-)", "f_usq (-)",
@@ -27,11 +16,11 @@ ReportTable result_table(const WalkerJobResults& r) {
               "impact loss (J)", "max inequality"};
   for (const GaitPoint& p : r.points) {
     const records::GaitRecord& g = p.gait;
-    t.rows.push_back({number(p.speed, "%.3f"), p.status, p.converged ? "yes" : "no", number(g.f_mech, "%.5f"),
-                      number(g.f_usq, "%.5f"), number(g.mean_speed, "%.4f"), number(g.step_length, "%.4f"),
-                      number(g.step_period, "%.4f"), number(g.floquet_multiplier, "%.4f"),
-                      g.real ? (g.stable ? "yes" : "no") : "-", number(g.impact_energy_loss, "%.3f"),
-                      number(g.max_inequality, "%.2e")});
+    t.rows.push_back({report_number(p.speed, "%.3f"), p.status, p.converged ? "yes" : "no", report_number(g.f_mech, "%.5f"),
+                      report_number(g.f_usq, "%.5f"), report_number(g.mean_speed, "%.4f"), report_number(g.step_length, "%.4f"),
+                      report_number(g.step_period, "%.4f"), report_number(g.floquet_multiplier, "%.4f"),
+                      g.real ? (g.stable ? "yes" : "no") : "-", report_number(g.impact_energy_loss, "%.3f"),
+                      report_number(g.max_inequality, "%.2e")});
   }
   return t;
 }
@@ -47,7 +36,7 @@ Report walker_job_report(const nlohmann::json& doc) {
                     (doc.contains("points_converged") && doc["points_converged"].is_number()
                          ? " (" + std::to_string(doc["points_converged"].get<int>()) + " required points converged), "
                          : std::string(", ")) +
-                    number(doc.value("run_seconds", nlohmann::json()), "%.1f") + " s of computation, " +
+                    report_number(doc.value("run_seconds", nlohmann::json()), "%.1f") + " s of computation, " +
                     std::to_string(doc.value("attempts", 0)) + " attempt(s)";
   ReportSection spec;
   spec.heading = "Job specification";
@@ -71,9 +60,9 @@ Report walker_job_report(const nlohmann::json& doc) {
                     "leg B orange.";
   for (const GaitPoint& p : r.points)
     if (p.converged && p.trajectory)
-      animations.figures.push_back({"v = " + number(p.gait.mean_speed, "%.2f") + " m/s, step length " +
-                                        number(p.gait.step_length, "%.3f") + " m, step period " +
-                                        number(p.gait.step_period, "%.3f") + " s",
+      animations.figures.push_back({"v = " + report_number(p.gait.mean_speed, "%.2f") + " m/s, step length " +
+                                        report_number(p.gait.step_length, "%.3f") + " m, step period " +
+                                        report_number(p.gait.step_period, "%.3f") + " s",
                                     gait_animation_svg(r, p)});
   if (animations.figures.empty()) animations.text = "No converged gait with a stored trajectory to animate.";
   report.sections = {spec, results, figures, animations};
