@@ -9,6 +9,7 @@
 #include "cyclopt/giant_swing/model.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_comparison_figures.hpp"
+#include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
@@ -77,7 +78,9 @@ results database file directly (read-only) when given --db FILE.
                      step-length (9.6a), floquet (9.6b), stroboscope (9.2; gait nearest
                      --speed, first job), foot (3.5a), all; foot-comparison (a
                      foot_comparison job: f_mech of every foot with the best envelope,
-                     Fig. 9.19a, and the foot outlines, Fig. 9.8); or giant-swing --result FILE
+                     Fig. 9.19a, and the foot outlines, Fig. 9.8); foot-fit (a foot_fit job:
+                     measured against model ankle and the fitted outline per converged fit,
+                     Fig. 4.3/4.4); or giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
   report JOB [--out FILE.html]
                      one self-contained HTML page: spec, solved points, all figures
@@ -474,6 +477,14 @@ int plot(Session& s, const Options& o) {
                                                                         nlohmann::json::parse(read_file(o.result)));
     const cyclopt::plot::RenderOptions size = cyclopt::plot::fitted_options(scene, 800);
     figures.push_back({"giant_swing_stroboscope", "Giant swing stroboscope (seed 000 Fig. 5.5)", std::move(scene), size});
+  } else if (kind == "foot-fit") {
+    if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-fit needs one --job JOB or --from FILE.json");
+    std::vector<std::string> not_drawn;
+    figures = cyclopt::plot::foot_fit_job_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))
+                                                                 : job_document(s, o.jobs.front()),
+                                                  &not_drawn);
+    for (const std::string& why : not_drawn) std::fprintf(stderr, "cyclopt: not drawn: %s\n", why.c_str());
+    if (figures.empty()) throw std::invalid_argument("plot foot-fit: no converged fit to draw");
   } else if (kind == "foot-comparison") {
     if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot foot-comparison needs one --job JOB or --from FILE.json");
     figures = cyclopt::plot::foot_comparison_figures(o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front()))

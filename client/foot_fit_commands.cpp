@@ -243,15 +243,13 @@ int run_fit_command(int argc, char** argv) {
       std::fprintf(stderr, "cyclopt-foot fit: wrote %s\n", save.c_str());
     }
     if (!plot_dir.empty()) {
-      std::filesystem::create_directories(plot_dir);
       for (const ff::FootFitResult* f : shown) {
-        const std::string stem = plot_dir + (f->model == foot::FootModel::hm ? "/fit_hm" : "/fit_hmt");
-        for (const char* ext : {".png", ".svg"}) {
-          const plot::Scene ankle = plot::fitted_ankle_scene(tracks, *f);
-          plot::render(ankle, stem + "_ankle" + ext, plot::fitted_options(ankle, 600));
-          const plot::Scene outline = plot::fitted_outline_scene(*f);
-          plot::render(outline, stem + "_outline" + ext, plot::fitted_options(outline, 600));
+        if (!f->converged) {  // a fit that did not converge is not drawn as if it had
+          std::fprintf(stderr, "cyclopt-foot fit: not drawn: %s fit did not converge (%s)\n",
+                       std::string(foot::to_string(f->model)).c_str(), f->message.c_str());
+          continue;
         }
+        for (const plot::Figure& figure : plot::fit_figures(tracks, *f)) plot::write_figure(figure, plot_dir);
       }
       std::fprintf(stderr, "cyclopt-foot fit: wrote the figures into %s\n", plot_dir.c_str());
     }

@@ -4,6 +4,7 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
+#include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/storage/result_queries.hpp"
@@ -103,6 +104,19 @@ TEST_F(FootFitJobs, AnOptimiseJobWalksOnTheStoredFit) {
   };
   const std::int64_t fit = finished("fit-2", io::foot_fit_job_spec(synthetic_tracks("P1-shoes-left-HMT", 0.0005)));
   ASSERT_GT(fit, 0);
+  {  // `cyclopt plot foot-fit --job` draws the stored fits from the document `cyclopt export` writes
+    nlohmann::json doc = storage::run_query(srv.store(), storage::query_for("job", fit)).rows.at(0);
+    for (const char* what : storage::kJobParts) doc[what] = storage::run_query(srv.store(), storage::query_for(what, fit)).rows;
+    std::vector<std::string> not_drawn;
+    const std::vector<plot::Figure> figures = plot::foot_fit_job_figures(doc, &not_drawn);
+    EXPECT_TRUE(not_drawn.empty()) << not_drawn.front();
+    ASSERT_EQ(figures.size(), 4u);
+    EXPECT_EQ(figures[0].name, "fit_hm_ankle");
+    EXPECT_EQ(figures[3].name, "fit_hmt_outline");
+    for (const plot::Figure& f : figures)
+      for (const std::string& path : plot::write_figure(f, (dir_ / "figures").string()))
+        EXPECT_GT(std::filesystem::file_size(path), 1000u) << path;
+  }
   nlohmann::json walk = {{"scene", "walker"}, {"task", "optimise"}, {"speed", 1.3},
                          {"foot", {{"fit", {{"job", fit}, {"model", "HMT"}}}}}};
   const std::int64_t job = finished("walk-1", walk);

@@ -102,4 +102,53 @@ records::FootFitRecord foot_fit_record(const foot_fit::FootFitResult& f) {
   return r;
 }
 
+records::FootFitAnglesRecord foot_fit_angles_record(const foot_fit::FootFitResult& f) {
+  records::FootFitAnglesRecord a;
+  for (const Eigen::VectorXd& theta : f.theta) a.theta.emplace_back(theta.data(), theta.data() + theta.size());
+  return a;
+}
+
+foot_fit::FootFitResult foot_fit_result(const records::FootFitRecord& r, const records::FootFitAnglesRecord& angles) {
+  foot_fit::FootFitResult f;
+  foot::FootSpec spec;
+  try {
+    spec = foot_spec_from_json(r.foot, "values.foot");
+  } catch (const std::exception& e) {
+    throw records::RecordError(e.what());
+  }
+  if (spec.model != foot::FootModel::hm && spec.model != foot::FootModel::hmt)
+    throw records::RecordError("values.foot: a fitted foot is HM or HMT");
+  if (angles.theta.size() != r.trials.size())
+    throw records::RecordError("trajectory.theta: " + std::to_string(angles.theta.size()) + " trials, the fit has " +
+                               std::to_string(r.trials.size()));
+  f.model = spec.model;
+  f.parameters = spec.parameters;
+  for (const records::FittedParameterRecord& p : r.parameters)
+    f.estimates.push_back({p.name, p.unit, p.value, p.lower, p.upper, p.standard_error, p.fixed, p.at_bound});
+  for (std::size_t k = 0; k < r.trials.size(); ++k) {
+    const std::vector<double>& theta = angles.theta[k];
+    if (static_cast<int>(theta.size()) != r.trials[k].samples)
+      throw records::RecordError("trajectory.theta[" + std::to_string(k) + "]: " + std::to_string(theta.size()) +
+                                 " angles, the trial has " + std::to_string(r.trials[k].samples) + " samples");
+    f.theta.push_back(Eigen::Map<const Eigen::VectorXd>(theta.data(), static_cast<Eigen::Index>(theta.size())));
+    f.x_off.push_back(r.trials[k].x_off);
+    f.trials.push_back({r.trials[k].source, r.trials[k].samples, r.trials[k].rms, r.trials[k].max});
+  }
+  f.samples = r.samples;
+  f.unknowns = r.unknowns;
+  f.rms = r.rms;
+  f.max_residual = r.max_residual;
+  f.noise_estimate = r.noise_estimate;
+  for (const records::ConvexityRowRecord& c : r.convexity) {
+    f.convexity.names.push_back(c.condition);
+    f.convexity.values.push_back(c.value);
+  }
+  f.convexity.convex = r.convex;
+  f.converged = r.converged;
+  f.iterations = r.iterations;
+  f.message = r.message;
+  f.seconds = r.seconds;
+  return f;
+}
+
 }  // namespace cyclopt::io

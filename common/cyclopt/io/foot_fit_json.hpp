@@ -35,5 +35,9 @@ std::vector<foot_fit::AnkleTrack> ankle_tracks_from_json(const nlohmann::json& j
                                                          int min_samples = foot_fit::AnkleTrackOptions{}.min_samples);
 
 records::FootFitRecord foot_fit_record(const foot_fit::FootFitResult& fit);
+records::FootFitAnglesRecord foot_fit_angles_record(const foot_fit::FootFitResult& fit);
+// The fit as stored, back (what the figures of a stored foot_fit job draw): throws
+// records::RecordError when the angles do not match the record's trials or the foot is invalid.
+foot_fit::FootFitResult foot_fit_result(const records::FootFitRecord& record, const records::FootFitAnglesRecord& angles);
 
 }  // namespace cyclopt::io

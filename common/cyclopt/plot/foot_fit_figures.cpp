@@ -2,10 +2,14 @@
 
 #include "cyclopt/foot/foot_profile.hpp"
 #include "cyclopt/foot/mass_properties.hpp"
+#include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/records/foot_fit_record.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
+#include <stdexcept>
 
 namespace cyclopt::plot {
 namespace {
@@ -66,6 +70,47 @@ Scene fitted_outline_scene(const foot_fit::FootFitResult& fit) {
   }
   scene.shapes.push_back(rolled);
   return scene;
+}
+
+std::vector<Figure> fit_figures(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit) {
+  const std::string stem = fit.model == foot::FootModel::hm ? "fit_hm" : "fit_hmt";
+  Scene ankle = fitted_ankle_scene(tracks, fit), outline = fitted_outline_scene(fit);
+  const RenderOptions ankle_size = fitted_options(ankle, 600), outline_size = fitted_options(outline, 600);
+  std::vector<Figure> out;
+  out.push_back({stem + "_ankle", ankle.axes.title, std::move(ankle), ankle_size});
+  out.push_back({stem + "_outline", outline.axes.title, std::move(outline), outline_size});
+  return out;
+}
+
+std::vector<Figure> foot_fit_job_figures(const nlohmann::json& doc, std::vector<std::string>* not_drawn) {
+  const std::int64_t id = doc.value("id", std::int64_t{0});
+  if (doc.value("task", "") != "foot_fit" || !doc.contains("spec"))
+    throw std::invalid_argument("job " + std::to_string(id) + " is a " + doc.value("task", std::string("?")) +
+                                " job; the foot fit figures need a foot_fit job");
+  const std::vector<foot_fit::AnkleTrack> tracks = io::ankle_tracks_from_json(doc["spec"].at("trials"), "spec.trials");
+  std::map<int, const nlohmann::json*> angles;  // by point index, into doc
+  const nlohmann::json none = nlohmann::json::array();
+  for (const nlohmann::json& t : doc.contains("trajectories") ? doc["trajectories"] : none)
+    if (t.value("format", "") == "json" && t.value("curve", 0) == 0) angles[t.value("point", 0)] = &t.at("data");
+  std::vector<Figure> out;
+  int fits = 0;
+  for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
+    if (s.value("curve", 0) != 0 || !records::is_foot_fit(s.at("values"))) continue;
+    ++fits;
+    const auto record = s["values"].get<records::FootFitRecord>();
+    const auto a = angles.find(s.value("point", 0));
+    std::string why;
+    if (!record.converged) why = "did not converge (" + record.message + ")";
+    else if (a == angles.end()) why = "has no stored foot angles (stored before they were kept)";
+    if (!why.empty()) {
+      if (not_drawn) not_drawn->push_back(record.model + " fit: " + why);
+      continue;
+    }
+    const foot_fit::FootFitResult fit = io::foot_fit_result(record, a->second->get<records::FootFitAnglesRecord>());
+    for (Figure& f : fit_figures(tracks, fit)) out.push_back(std::move(f));
+  }
+  if (fits == 0) throw std::invalid_argument("job " + std::to_string(id) + " has no stored fit yet (is it finished?)");
+  return out;
 }
 
 }  // namespace cyclopt::plot

@@ -6,7 +6,11 @@
 #include "cyclopt/foot_fit/ankle_track.hpp"
 #include "cyclopt/foot_fit/rolling_foot_fit.hpp"
 #include "cyclopt/plot/scene.hpp"
+#include "cyclopt/plot/walker_figures.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <string>
 #include <vector>
 
 namespace cyclopt::plot {
@@ -15,5 +19,13 @@ namespace cyclopt::plot {
 Scene fitted_ankle_scene(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit);
 // (b)
 Scene fitted_outline_scene(const foot_fit::FootFitResult& fit);
+// Both, as figures with stems fit_hm_ankle, fit_hm_outline (fit_hmt_... for HMT).
+std::vector<Figure> fit_figures(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit);
+
+// The figures of a stored foot_fit job (service/foot_fit_kind.hpp) from the document `cyclopt
+// export` writes: the trials from its spec, each converged fit from its record and angles. A fit
+// that did not converge is not drawn; with `not_drawn` it is listed there with its reason.
+// Throws std::invalid_argument when the document is not a foot_fit job or holds no fit yet.
+std::vector<Figure> foot_fit_job_figures(const nlohmann::json& document, std::vector<std::string>* not_drawn = nullptr);
 
 }  // namespace cyclopt::plot

@@ -87,4 +87,20 @@ void from_json(const nlohmann::json& j, FootFitRecord& f) {
   if (!f.foot.is_object()) throw RecordError("values.foot: is not a foot spec object");
 }
 
+void to_json(nlohmann::json& j, const FootFitAnglesRecord& a) { j = {{"theta", a.theta}}; }
+
+void from_json(const nlohmann::json& j, FootFitAnglesRecord& a) {
+  const std::string r = "trajectory";
+  a = FootFitAnglesRecord{};
+  a.theta = list<std::vector<double>>(j, r, "theta", [](const nlohmann::json& trial, const std::string& at) {
+    if (!trial.is_array()) throw RecordError(at + ": is not an array");
+    std::vector<double> angles;
+    for (std::size_t i = 0; i < trial.size(); ++i) {
+      if (!trial[i].is_number()) throw RecordError(at + "[" + std::to_string(i) + "]: is not a number");
+      angles.push_back(trial[i].get<double>());
+    }
+    return angles;
+  });
+}
+
 }  // namespace cyclopt::records

@@ -53,10 +53,19 @@ struct FootFitRecord {
   bool operator==(const FootFitRecord&) const = default;
 };
 
+// The fitted foot angles theta_F,k,j (rad) per trial k and sample j, unknowns of (4.16) / (4.21):
+// stored as the fit point's trajectory, they give the model ankle of every sample for Fig. 4.3a.
+struct FootFitAnglesRecord {
+  std::vector<std::vector<double>> theta;
+  bool operator==(const FootFitAnglesRecord&) const = default;
+};
+
 // Whether a point's values are a FootFitRecord.
 bool is_foot_fit(const nlohmann::json& values);
 
 void to_json(nlohmann::json& j, const FootFitRecord& f);
 void from_json(const nlohmann::json& j, FootFitRecord& f);  // throws RecordError naming the field
+void to_json(nlohmann::json& j, const FootFitAnglesRecord& a);
+void from_json(const nlohmann::json& j, FootFitAnglesRecord& a);  // throws RecordError naming the element
 
 }  // namespace cyclopt::records

@@ -38,6 +38,7 @@ storage::SolutionPoint fit_point(int index, const foot_fit::FootFitResult& fit) 
   p.iterations = fit.iterations;
   p.status = fit.converged ? "converged" : "not converged";  // the reason: values.message
   p.values = io::foot_fit_record(fit);
+  p.trajectory = io::foot_fit_angles_record(fit);  // for the figures of the stored fit (Fig. 4.3a)
   return p;
 }
 

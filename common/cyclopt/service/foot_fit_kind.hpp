@@ -16,7 +16,8 @@
 // Stored (curve 0): point 0 the HM fit, point 1 the HMT fit, each a records::FootFitRecord
 // (parameters with bounds and standard errors, RMS / max residual, residual per trial, convexity
 // check, the fitted foot spec); parameter 0 / 1, objective the RMS residual (m), status
-// converged or the solver's reason. A walker job uses a stored fit as its foot by reference,
+// converged or the solver's reason; its trajectory the fitted foot angles per trial and sample
+// (records::FootFitAnglesRecord). A walker job uses a stored fit as its foot by reference,
 // "foot": {"fit": {"job": J, "model": "HMT"}} (stored_foot_fit.hpp).
 
 #include "cyclopt/service/job_kind.hpp"

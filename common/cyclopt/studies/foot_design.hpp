@@ -11,7 +11,8 @@
 //      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange); where the
 //      QPSQP run stops, the rest of the grid with the trivial predictor (warm starts);
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
-//      speed reached (Fig. 10.2a green and blue).
+//      grid speed reached (Fig. 10.2a green and blue), each started from that foot's optimal gait
+//      (SpeedSweepOptions::known_gaits) before its seed multistarts.
 // The references, swept once with the same options: the start foot with its own masses (Table
 // 5.1) and point feet (Table D.1). Savings are those of foot_comparison.hpp: 1 - mean f_mech of
 // the design / mean f_mech of the reference, over the grid speeds both reach.
@@ -65,7 +66,7 @@ struct DensityDesign {
   int class_counts[4] = {0, 0, 0, 0};     // optima per DesignClass
   ContinuationResult free_foot;           // step 2 (empty without a design)
   std::vector<double> free_foot_f_mech;   // per grid speed, NaN where step 2 has no converged point
-  foot::FootSpec low_speed_foot;          // optimal at the lowest speed step 2 reached
+  foot::FootSpec low_speed_foot;          // optimal at the lowest grid speed step 2 reached
   double low_speed = 0.0;
   FootSweepSummary high, low;             // step 3 for the design and for low_speed_foot
   double saving_vs_start = 0.0, saving_vs_point = 0.0;  // of `high`; NaN without references

@@ -28,6 +28,9 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
+// The best optimum of a multistart (its optima are best first), if any.
+std::optional<Eigen::VectorXd> best_optimum(const nlp::MultistartResult& m);
+
 // A curve to continue from a solved point towards one end of the grid.
 struct Task {
   Eigen::VectorXd x;
@@ -61,6 +64,9 @@ class Sweep {
   }
   nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts);
   std::optional<Eigen::VectorXd> gait_multistart_at(double v, int* solves = nullptr);
+  // Opens a curve through the optimum x at v and continues it both ways, unless there is none or it
+  // lies on a known curve.
+  void continue_new_optimum(double v, const std::optional<Eigen::VectorXd>& x, SweepStep step);
   bool on_known_curve(double v, const Eigen::VectorXd& x, double f) const;
   const CurvePoint* best_at(double v) const;
   int open_curve(const CurveOrigin& origin);
@@ -195,9 +201,21 @@ std::optional<Eigen::VectorXd> Sweep::gait_multistart_at(double v, int* solves) 
     starts.push_back(shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)));
   }
   if (solves) *solves += o_.starts;
-  const nlp::MultistartResult m = solve_from(v, std::move(starts));
+  return best_optimum(solve_from(v, std::move(starts)));
+}
+
+std::optional<Eigen::VectorXd> best_optimum(const nlp::MultistartResult& m) {
   if (m.optima.empty()) return std::nullopt;
   return m.optima.front().x;
+}
+
+void Sweep::continue_new_optimum(double v, const std::optional<Eigen::VectorXd>& x, SweepStep step) {
+  if (!x) return;
+  nlp::Evaluation e;
+  if (!walker::GaitProblem(model_, at_speed(v)).evaluate(*x, false, e).ok || on_known_curve(v, *x, e.objective)) return;
+  const int id = open_curve({step, v});
+  std::deque<Task> queue{{*x, v, 1.0, id, true, false}, {*x, v, -1.0, id, false, false}};
+  run_queue(queue);
 }
 
 bool Sweep::on_known_curve(double v, const Eigen::VectorXd& x, double f) const {
@@ -477,22 +495,24 @@ SpeedSweepResult Sweep::run() {
     if (std::find(seeds.begin(), seeds.end(), i) == seeds.end()) seeds.push_back(i);
   }
   seed_batches_left_ = static_cast<int>(seeds.size());
+  for (const KnownGait& known : o_.known_gaits) {
+    if (stopped_ || r_.curves >= o_.max_curves) break;
+    char detail[48];
+    std::snprintf(detail, sizeof detail, "from a known gait at %.4g m/s", known.speed);
+    begin_phase(SweepPhase::multistart, detail, 1);
+    const walker::GaitProblem shape(model_, at_speed(known.speed));
+    continue_new_optimum(known.speed, best_optimum(solve_from(known.speed, {shape.initial_point(known.x)})),
+                         SweepStep::known_gait);
+  }
   for (const std::size_t i : seeds) {
+    if (stopped_ || r_.curves >= o_.max_curves) break;
     const double v = o_.speeds[i];
     seeded_[i] = true;
     --seed_batches_left_;
     char detail[32];
     std::snprintf(detail, sizeof detail, "at %.4g m/s", v);
     begin_phase(SweepPhase::multistart, detail, o_.starts);
-    const std::optional<Eigen::VectorXd> x = gait_multistart_at(v);
-    if (!x) continue;
-    nlp::Evaluation e;
-    if (!walker::GaitProblem(model_, at_speed(v)).evaluate(*x, false, e).ok || on_known_curve(v, *x, e.objective)) continue;
-    if (r_.curves >= o_.max_curves) break;
-    const int id = open_curve({SweepStep::seed_multistart, v});
-    std::deque<Task> queue{{*x, v, 1.0, id, true, false}, {*x, v, -1.0, id, false, false}};
-    run_queue(queue);
-    if (stopped_) break;
+    continue_new_optimum(v, gait_multistart_at(v), SweepStep::seed_multistart);
   }
   select_best();
   if (o_.recover && !stopped_) {
@@ -523,6 +543,7 @@ const char* to_string(SweepPhase phase) {
 const char* to_string(SweepStep step) {
   switch (step) {
     case SweepStep::seed_multistart: return "multistart at a seed speed";
+    case SweepStep::known_gait: return "solve from a known gait";
     case SweepStep::jump: return "jump of a continuation run";
     case SweepStep::neighbour_start: return "R1 neighbour start";
     case SweepStep::neighbour_multistart: return "R2 neighbour multistart";
@@ -548,6 +569,14 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
   if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
+  const int gait_count = walker::GaitProblem(model, problem).gait_parameter_count();
+  for (const KnownGait& known : options.known_gaits) {
+    if (std::none_of(options.speeds.begin(), options.speeds.end(), [&](double v) { return same_speed(known.speed, v); }))
+      throw std::invalid_argument("known_gaits: speed " + std::to_string(known.speed) + " m/s is not one of the speeds");
+    if (known.x.size() != gait_count)
+      throw std::invalid_argument("known_gaits: " + std::to_string(known.x.size()) + " gait parameters, expected " +
+                                  std::to_string(gait_count));
+  }
   return Sweep(model, problem, options, on_point).run();
 }
 

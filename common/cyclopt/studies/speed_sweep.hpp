@@ -25,6 +25,9 @@
 // speed go first; each target and each (speed, neighbour curve) pair is tried once, so the
 // recovery ends. A speed still without a point gets a reason naming what was tried and which
 // options to change. BestPoint::step tells which step found the curve through the selected point.
+// Before step 1, known gaits (options.known_gaits: a gait the caller solved at a grid speed, such as
+// a foot design's optimum, section 10.2) are solved from and continued in both directions like a
+// seed optimum; the seed multistarts follow and add what they find off those curves.
 #include "cyclopt/continuation/continuation_solver.hpp"
 #include "cyclopt/studies/sweep_journal.hpp"
 #include "cyclopt/studies/sweep_progress.hpp"
@@ -40,6 +43,12 @@ using continuation::ContinuationOptions;
 using continuation::ContinuationResult;
 using continuation::CurvePoint;
 using continuation::PointCallback;
+
+// A gait known at a grid speed: x in the layout of GaitProblem::gait_parameters.
+struct KnownGait {
+  double speed = 0.0;
+  Eigen::VectorXd x;
+};
 
 struct SpeedSweepOptions {
   std::vector<double> speeds;                       // the grid, strictly ascending, >= 2 values
@@ -59,6 +68,7 @@ struct SpeedSweepOptions {
   // failed and the trust region shrinks, instead of spending MaxIter = 2000 iterations per failing
   // try (HMT P2 downwards near 0.46 m/s: ~16000 corrector iterations per run). >= 1.
   int corrector_max_iterations = 300;
+  std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
   // Called when a phase begins, after every multistart solve and at every converged grid point
   // (sweep_progress.hpp); from the sweep's thread or, one call at a time, from multistart workers.
@@ -68,6 +78,7 @@ struct SpeedSweepOptions {
 // The step of the sweep that found a curve (the first point of it).
 enum class SweepStep {
   seed_multistart,       // step 1: multistart from the automatic starting gait at a seed speed
+  known_gait,            // a solve from options.known_gaits
   jump,                  // a continuation run converged onto another curve (curve_jump.hpp)
   neighbour_start,       // R1
   neighbour_multistart,  // R2

@@ -20,10 +20,12 @@ void copy_gradient(const ad::Dual<N>& v, int offset, int count, Eigen::RowVector
 // One forward-mode pass: seeds the directions start .. start+count-1 of [x; p_mod(parameter_indices)]
 // into Dual<N> and stores their derivative columns. The model is cast to Dual only where a model
 // parameter is seeded or the reference path asks for it; otherwise its constants stay double.
+// Returns false with *failure set when the Dual evaluation finds no real gait where the double one
+// did: at the boundary of existence a test such as (5.47) can fall the other way by rounding.
 template <int N>
-void derivative_pass(const WalkerModel<double>& model, const BezierBasis& basis, const Eigen::VectorXd& x,
+bool derivative_pass(const WalkerModel<double>& model, const BezierBasis& basis, const Eigen::VectorXd& x,
                      const std::vector<int>& parameter_indices, const GaitOptions& options, int start, int count,
-                     bool dual_model, GaitDerivatives& d) {
+                     bool dual_model, GaitDerivatives& d, std::string* failure) {
   using Dual = ad::Dual<N>;
   const int nx = static_cast<int>(x.size());
   Vector<Dual> xd(nx);
@@ -46,7 +48,10 @@ void derivative_pass(const WalkerModel<double>& model, const BezierBasis& basis,
   } else {
     gd = periodic_gait(model, basis, xd, options);
   }
-  if (!gd.real) throw std::logic_error("derivative pass disagrees with value pass: " + gd.failure);
+  if (!gd.real) {
+    *failure = gd.failure;
+    return false;
+  }
   copy_gradient(gd.objective, start, count, d.objective);
   copy_gradient(gd.f_mech, start, count, d.f_mech);
   copy_gradient(gd.f_usq, start, count, d.f_usq);
@@ -57,6 +62,7 @@ void derivative_pass(const WalkerModel<double>& model, const BezierBasis& basis,
   copy_gradient(gd.floquet, start, count, d.floquet);
   for (int r = 0; r < gd.inequalities.size(); ++r)
     d.inequalities.block(r, start, 1, count) = gd.inequalities(r).d.head(count).transpose();
+  return true;
 }
 
 // A derivative pass allocates and frees ~6 MB of Dual arrays (P = 200, 30 directions). With glibc's
@@ -115,14 +121,21 @@ GaitEvaluation GaitEvaluator::derivatives(const Eigen::VectorXd& x, const GaitOp
   light.keep_trajectories = false;
   const bool reference = path == DerivativePath::reference;
   // One pass carrying all directions for the default Bezier degree M = 6 (point feet 20, feet 30).
+  std::string failure;
+  bool real = true;
   if (!reference && np == 0 && nx == 20)
-    derivative_pass<20>(model_, basis_, x, parameter_indices, light, 0, n, false, d);
+    real = derivative_pass<20>(model_, basis_, x, parameter_indices, light, 0, n, false, d, &failure);
   else if (!reference && np == 0 && nx == 30)
-    derivative_pass<30>(model_, basis_, x, parameter_indices, light, 0, n, false, d);
+    real = derivative_pass<30>(model_, basis_, x, parameter_indices, light, 0, n, false, d, &failure);
   else
-    for (int start = 0; start < n; start += kJacobianChunk)
-      derivative_pass<kJacobianChunk>(model_, basis_, x, parameter_indices, light, start,
-                                      std::min(kJacobianChunk, n - start), reference, d);
+    for (int start = 0; start < n && real; start += kJacobianChunk)
+      real = derivative_pass<kJacobianChunk>(model_, basis_, x, parameter_indices, light, start,
+                                             std::min(kJacobianChunk, n - start), reference, d, &failure);
+  if (!real) {  // treated like a value pass without a gait: the caller backtracks or stops
+    out.gait.real = false;
+    out.gait.failure = "on the boundary of existence, the derivative pass finds: " + failure;
+    return out;
+  }
   out.has_derivatives = true;
   return out;
 }

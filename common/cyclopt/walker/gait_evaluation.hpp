@@ -42,6 +42,8 @@ class GaitEvaluator {
   // Values only.
   PeriodicGait<double> evaluate(const Eigen::VectorXd& x, const GaitOptions& options) const;
   // Values and derivatives with respect to x and the listed model parameters (indices into p_mod).
+  // Where the value pass finds a gait but the derivative pass, on the boundary of existence, does
+  // not, the result has gait.real = false with both passes' reason, like a point without a gait.
   GaitEvaluation evaluate_with_derivatives(const Eigen::VectorXd& x, const GaitOptions& options,
                                            const std::vector<int>& parameter_indices = {}) const;
   // The same derivatives by the plain reference path: chunks of ad::Dual<kJacobianChunk> with the

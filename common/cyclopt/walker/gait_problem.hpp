@@ -46,6 +46,7 @@ class GaitProblem : public nlp::Problem {
   // z from gait parameters x and the model's current values of the free parameters, and back.
   Eigen::VectorXd initial_point(const Eigen::VectorXd& x) const;
   Eigen::VectorXd gait_parameters(const Eigen::VectorXd& z) const { return z.head(gait_count_); }
+  int gait_parameter_count() const { return gait_count_; }
   // The model with the free parameters taken from z.
   WalkerModel<double> model_at(const Eigen::VectorXd& z) const;
   // The full gait (with trajectories) at z.
