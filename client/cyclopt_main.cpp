@@ -13,6 +13,7 @@
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
+#include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
@@ -53,12 +54,17 @@ results database file directly (read-only) when given --db FILE.
   submit --task foot_comparison --speeds LO:STEP:HI [--feet PRESET,PRESET,...]
          [--reference PRESET] [--starts N] ...
   submit --task foot_fit --trials FILE.trc|FILE.csv,... [--name TEXT] ...
+  submit --task foot_design [--foot FILE.json|PRESET] [--densities LIST|LO:STEP:HI]
+         [--design-speed V] [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
                      spec, --speeds a walker job of TASK (default sweep); foot_comparison
                      sweeps --feet (default: the 16 of seed 001 section 9.2) and --reference
                      (default point) with --starts starts per seed speed; foot_fit fits HM
                      and HMT feet to the trials' ankle tracks (markers LMAL and MMAL, z up;
-                     other layouts: cyclopt-foot fit --job-spec FILE). Resent every
+                     other layouts: cyclopt-foot fit --job-spec FILE); foot_design designs
+                     a foot per density from --foot (default P2-shoes-left-HMT) with
+                     --starts design starts at --design-speed (seed 001 section 10.2;
+                     defaults 10:10:70 kg/m^2, 20 starts, 2.3 m/s of 0.3:0.1:2.3). Resent every
                      0.5 s until the server answers (same request id, so never queued
                      twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
@@ -67,7 +73,9 @@ results database file directly (read-only) when given --db FILE.
   query JOB [--what solutions|events|curves|trajectories] [--wide | --csv | --json]
                      a job's solved points (default): for walker jobs one line per point
                      (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
-                     loss, status, curve); --wide / --csv every scalar, --json everything
+                     loss, status, curve); for a foot_design job one line per density (its
+                     design, masses, active bounds, mean f_mech, savings); --wide / --csv
+                     every scalar, --json everything
   export JOB [--out FILE]
                      everything about a job as JSON: spec, events, curves, points, trajectories
   cancel JOB         cancel a queued or running job
@@ -102,11 +110,11 @@ struct Options {
   std::string command;
   std::vector<std::string> positional;
   std::string lcm_url, key_file, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
-      what = "solutions", result, feet, reference, trials;
+      what = "solutions", result, feet, reference, trials, densities;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
-  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan("");
-  int point_delay_ms = -1, starts = -1;
+  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan("");
+  int point_delay_ms = -1, starts = -1, sweep_starts = -1;
   bool watch = false;
   cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
 };
@@ -136,7 +144,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 // Every option parse_args() knows, for "did you mean" on a misspelled one.
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
-    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
     "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
@@ -168,7 +176,10 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--feet") o.feet = next();
     else if (a == "--reference") o.reference = next();
     else if (a == "--trials") o.trials = next();
+    else if (a == "--densities") o.densities = next();
+    else if (a == "--design-speed") o.design_speed = number(next());
     else if (a == "--starts") o.starts = static_cast<int>(number(next()));
+    else if (a == "--sweep-starts") o.sweep_starts = static_cast<int>(number(next()));
     else if (a == "--name") o.name = next();
     else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
     else if (a == "--request-id") o.request_id = next();
@@ -251,8 +262,33 @@ std::string foot_fit_spec_text(const Options& o) {
   return text;
 }
 
+// foot_design from flags: --foot (the start foot), --densities ("10:10:70" or "10,30,50"),
+// --design-speed, --speeds, --starts (design multistart), --sweep-starts; the rest defaults
+// (service/foot_design_kind.hpp).
+std::string foot_design_spec_text(const Options& o) {
+  nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_design"}};
+  if (!o.foot.empty()) spec["foot"] = foot_argument("--foot", o.foot);
+  if (o.densities.find(':') != std::string::npos) {
+    spec["densities"] = o.densities;  // "lo:step:hi", read by the server's value_range
+  } else if (!o.densities.empty()) {
+    spec["densities"] = nlohmann::json::array();
+    std::stringstream ss(o.densities);
+    for (std::string rho; std::getline(ss, rho, ',');) try {
+        spec["densities"].push_back(std::stod(rho));
+      } catch (const std::exception&) {
+        throw UsageError("--densities: '" + rho + "' is not a number");
+      }
+  }
+  if (std::isfinite(o.design_speed)) spec["design_speed"] = o.design_speed;
+  if (!o.speeds.empty()) spec["speeds"] = o.speeds;
+  if (o.starts > 0) spec["multistart"] = {{"starts", o.starts}};
+  if (o.sweep_starts > 0) spec["sweep_starts"] = o.sweep_starts;
+  if (!o.name.empty()) spec["name"] = o.name;
+  return spec.dump();
+}
+
 // The spec text of `submit`: the file's, or a foot_sweep / walker job / foot_comparison /
-// foot_fit from flags.
+// foot_fit / foot_design from flags.
 std::string spec_text(const Options& o) {
   if (!o.spec_file.empty()) {
     const std::string text = read_file(o.spec_file);
@@ -264,6 +300,9 @@ std::string spec_text(const Options& o) {
   }
   if (o.task == "foot_comparison") return foot_comparison_spec_text(o);
   if (o.task == "foot_fit") return foot_fit_spec_text(o);
+  if (o.task == "foot_design") return foot_design_spec_text(o);
+  if (!o.densities.empty() || std::isfinite(o.design_speed) || o.sweep_starts > 0)
+    throw UsageError("--densities, --design-speed and --sweep-starts need --task foot_design");
   if (!o.trials.empty()) throw UsageError("--trials needs --task foot_fit");
   if (!o.feet.empty() || !o.reference.empty()) throw UsageError("--feet and --reference need --task foot_comparison");
   const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
@@ -532,7 +571,18 @@ int run(const Options& o) {
     return kOk;
   }
   if (o.command == "query") {
-    cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows, o.format);
+    const nlohmann::json rows = s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows;
+    // A foot_design job's table is its designs, one line per density; --wide shows every point.
+    nlohmann::json designs = nlohmann::json::array();
+    if (o.what == "solutions" && o.format == cyclopt::client::RowFormat::table)
+      for (const nlohmann::json& row : rows)
+        if (cyclopt::records::is_designed_foot(row.value("values", nlohmann::json()))) designs.push_back(row);
+    if (!designs.empty()) {
+      cyclopt::client::print_rows(std::cout, designs, o.format);
+      std::fprintf(stderr, "cyclopt: %zu densities of %zu stored points (--wide: every point)\n", designs.size(), rows.size());
+      return kOk;
+    }
+    cyclopt::client::print_rows(std::cout, rows, o.format);
     return kOk;
   }
   throw UsageError(o.command.empty() ? "no command given"

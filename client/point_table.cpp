@@ -1,5 +1,6 @@
 #include "point_table.hpp"
 
+#include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/records/gait_records.hpp"
 
@@ -36,11 +37,39 @@ std::optional<nlohmann::ordered_json> fit_summary(const nlohmann::json& row, con
   return s;
 }
 
+// A foot_design density (service/foot_design_kind.hpp): the classes of the multistart's optima
+// (admissible/stilt/wheel/no rolling), the design's parameters and mass, the bounds (10.1) it
+// touches, its fixed-foot sweep's mean f_mech and savings, and the speeds that sweep reached.
+std::optional<nlohmann::ordered_json> design_summary(const nlohmann::json& row, const nlohmann::json& values) {
+  records::DesignedFootRecord d;
+  try {
+    d = values.get<records::DesignedFootRecord>();
+  } catch (const records::RecordError&) {
+    return std::nullopt;
+  }
+  nlohmann::ordered_json s;
+  s["rho_kg_m2"] = number(d.density);
+  s["optima_a/s/w/n"] = std::to_string(d.admissible_optima) + "/" + std::to_string(d.stilt_optima) + "/" +
+                        std::to_string(d.wheel_optima) + "/" + std::to_string(d.no_rolling_optima);
+  for (const auto& [name, value] : d.design.parameters) s[name] = number(value);
+  s["m_F_kg"] = number(d.design.m_F);
+  std::string bounds;
+  for (const std::string& b : d.active_bounds) bounds += (bounds.empty() ? "" : ", ") + b.substr(0, b.find(' '));
+  s["active_bounds"] = bounds;
+  s["mean_f_mech"] = number(d.mean_f_mech);
+  s["saving_vs_start_%"] = number(100 * d.saving_vs_start);
+  s["saving_vs_point_%"] = number(100 * d.saving_vs_point);
+  s["speeds"] = std::to_string(d.speeds_reached) + "/" + std::to_string(d.speeds);
+  s["status"] = member(row, "status");
+  return s;
+}
+
 }  // namespace
 
 std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   const nlohmann::json values = member(row, "values");
   if (records::is_foot_fit(values)) return fit_summary(row, values);
+  if (records::is_designed_foot(values)) return design_summary(row, values);
   const nlohmann::json gait_json = member(values, "gait");
   if (!gait_json.is_object()) return std::nullopt;
   records::GaitRecord gait;

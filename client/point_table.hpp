@@ -2,7 +2,8 @@
 // `cyclopt query JOB` for people: one line per stored walker point with the quantities users look
 // for first (seed 001 ch. 9): speed, f_mech (or the objective), step length, period, cadence,
 // Floquet multiplier, impact loss, status and curve; a foot_fit point its model, RMS and max
-// residual and fitted parameters (records/foot_fit_record.hpp). Rows of other kinds (foot sweeps, giant
+// residual and fitted parameters (records/foot_fit_record.hpp); a foot_design density its design
+// (records/foot_design_records.hpp). Rows of other kinds (foot sweeps, giant
 // swings) and --wide show every scalar column instead (row_table.hpp). The gait is read through
 // the result contract (records/gait_records.hpp).
 

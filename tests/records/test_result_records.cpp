@@ -1,6 +1,7 @@
 // The result contract (records/): every record survives to_json -> text -> from_json unchanged,
 // NaN survives as null, and a missing or mistyped member is an error naming it.
 #include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/records/solver_record.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
@@ -156,6 +157,65 @@ TEST(ResultRecords, FootComparisonRecordsRoundTrip) {
   other.envelope_common_speeds.reset();
   other.comparison_seconds.reset();
   EXPECT_EQ(round_trip(other), other);
+}
+
+DesignedFoot designed_foot(double h_F) {
+  return {{{"h_F", h_F}, {"l_HM", 0.4}, {"k_HM", 0.06}}, 0.236, 0.1028, 1.98e-3, 2.354};
+}
+
+TEST(ResultRecords, FootDesignRecordsRoundTrip) {
+  DesignPointRecord p;
+  p.density = 10;
+  p.foot = designed_foot(0.1);
+  p.active_bounds = {"l_HM_max - l_HM >= 0", "h_F_max - h_F >= 0"};
+  p.design_class = "admissible";
+  p.class_reason = "rolls over 95 % of the sole";
+  p.reached_by_starts = {0, 3};
+  p.design = true;
+  EXPECT_EQ(round_trip(p), p);
+  DesignPointRecord free_foot;  // a continuation point: no class
+  free_foot.density = 10;
+  free_foot.foot = designed_foot(0.09);
+  EXPECT_EQ(round_trip(free_foot), free_foot);
+  DesignedFootRecord d;
+  d.density = 10;
+  d.admissible = true;
+  d.starts = 20;
+  d.kkt_starts = 7;
+  d.admissible_optima = 2;
+  d.stilt_optima = 1;
+  d.wheel_optima = 1;
+  d.no_rolling_optima = 0;
+  d.best = 1;
+  d.design_objective = 0.0343;
+  d.design = designed_foot(0.1);
+  d.active_bounds = p.active_bounds;
+  d.speeds = 21;
+  d.free_foot_speeds = 3;
+  d.low_speed = 2.0;
+  d.low_speed_design = designed_foot(0.08);
+  d.speeds_reached = 21;
+  d.mean_f_mech = 0.0297;
+  d.saving_vs_start = 0.2;
+  d.saving_vs_point = 0.67;
+  d.low_speeds_reached = 20;
+  d.low_mean_f_mech = 0.03;
+  d.low_saving_vs_start = 0.19;
+  d.low_saving_vs_point = 0.66;
+  d.multistart_seconds = 80;
+  d.continuation_seconds = 90;
+  d.sweep_seconds = 280;
+  d.seconds = 450;
+  EXPECT_EQ(round_trip(d), d);
+  EXPECT_TRUE(is_designed_foot(nlohmann::json(d)));
+  EXPECT_FALSE(is_designed_foot(nlohmann::json(p)));
+  DesignedFootRecord none;  // no admissible design: NaN and empty members survive as such
+  none.density = 70;
+  none.reason = "every optimum of the design multistart is degenerate";
+  const DesignedFootRecord back = round_trip(none);
+  EXPECT_EQ(back.reason, none.reason);
+  EXPECT_TRUE(std::isnan(back.mean_f_mech) && std::isnan(back.design.m_F) && back.design.parameters.empty());
+  EXPECT_EQ(error_of<DesignedFootRecord>({{"density", 10}}), "values.admissible: is missing");
 }
 
 TEST(ResultRecords, NanIsStoredAsNullAndReadBackAsNan) {

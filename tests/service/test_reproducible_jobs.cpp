@@ -216,6 +216,19 @@ TEST(ResolvedSpec, AFootFitSpellsOutItsTrialsAndTheToeBound) {
   EXPECT_EQ(service::random_seeds(r), nlohmann::json::object());
 }
 
+// The start foot as given (full parameters), the free foot parameters and bounds (10.1), every
+// design and sweep field.
+TEST(ResolvedSpec, AFootDesignSpellsOutItsStartFootDesignAndSweepFields) {
+  const nlohmann::json r = resolved_fixed_point({{"scene", "walker"}, {"task", "foot_design"}});
+  EXPECT_EQ(r["foot"], io::to_json(foot::foot_preset("P2-shoes-left-HMT").spec));
+  for (const char* key : {"speeds", "free_parameters", "design_bounds", "densities", "design_speed", "references",
+                          "sweep_starts", "continuation", "solver", "multistart", "points", "bezier_degree"})
+    EXPECT_TRUE(r.contains(key)) << key << " missing in " << r.dump();
+  EXPECT_EQ(r["design_speed"], 2.3);
+  EXPECT_EQ(r["continuation"]["seed_speeds"], (nlohmann::json{0.3, 1.3, 2.3}));
+  EXPECT_EQ(service::random_seeds(r), (nlohmann::json{{"multistart.seed", 1}}));
+}
+
 TEST(ResolvedSpec, SeedsAreTheFieldsNamedSeed) {
   EXPECT_EQ(service::random_seeds({{"multistart", {{"seed", 7}, {"starts", 3}}}, {"seed_speeds", {1}}}),
             (nlohmann::json{{"multistart.seed", 7}}));

@@ -1,6 +1,7 @@
 #include "cyclopt/service/builtin_job_kinds.hpp"
 
 #include "cyclopt/service/foot_comparison_kind.hpp"
+#include "cyclopt/service/foot_design_kind.hpp"
 #include "cyclopt/service/foot_fit_kind.hpp"
 #include "cyclopt/service/foot_sweep_kind.hpp"
 #include "cyclopt/service/giant_swing_job_kind.hpp"
@@ -18,6 +19,7 @@ JobKindRegistry builtin_job_kinds() {
   registry.add(walker_continuation_kind());
   registry.add(walker_sweep_kind());
   registry.add(foot_comparison_kind());
+  registry.add(foot_design_kind());
   registry.add(foot_fit_kind());
   registry.add(giant_swing_kind());
   return registry;

@@ -3,13 +3,13 @@
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/sweep_fields.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
-#include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/studies/foot_comparison.hpp"
 #include "cyclopt/studies/walker_family.hpp"
 
@@ -26,8 +26,7 @@ namespace {
 struct ComparisonJob {
   WalkerJob walker;                       // the common fields; walker.foot is the reference
   std::vector<foot::FootSpec> feet;       // the reference first, then the compared feet
-  std::vector<double> seed_speeds{0.3, 1.3, 2.3};  // "continuation.seed_speeds"
-  double min_trust_region = continuation::ContinuationOptions{}.min_trust_region;
+  SweepFields sweeps;                     // "continuation"
 };
 
 // A compared foot is known by its preset name, else by its spec's name, else by its field path.
@@ -74,27 +73,13 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
       j.feet.back().name = f->name();
     }
   }
-  if (spec.contains("continuation")) {
-    const nlohmann::json& c = object_value(spec["continuation"], "continuation");
-    reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region"});
-    if (c.contains("seed_speeds"))
-      j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
-    j.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(j.min_trust_region);
-  }
+  j.sweeps = parse_sweep_fields(spec);
   std::set<std::string> seen;
   for (std::size_t i = 0; i < j.feet.size(); ++i)
     if (!seen.insert(j.feet[i].name).second)
       throw SpecError(i == 0 ? "reference" : "feet[" + std::to_string(i - 1) + "]",
                       "foot '" + j.feet[i].name + "' is compared twice");
   return j;
-}
-
-storage::SolutionPoint not_found(storage::PointKey key, const studies::BestPoint& b) {
-  storage::SolutionPoint p;
-  p.key = key;
-  p.parameter = b.speed;
-  p.status = "not found";
-  return p;
 }
 
 void run_comparison(const ComparisonJob& job, JobContext& ctx) {
@@ -108,13 +93,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   }
   studies::FootComparisonOptions o;
   o.reference = 0;
-  o.sweep.speeds = job.walker.speeds;
-  o.sweep.starts = job.walker.starts;
-  o.sweep.seed = job.walker.seed;
-  o.sweep.scale = job.walker.scale;
-  o.sweep.seed_speeds = job.seed_speeds;
-  o.sweep.continuation.min_trust_region = job.min_trust_region;
-  o.sweep.continuation.corrector = job.walker.solver;
+  o.sweep = sweep_options(job.walker, job.sweeps, job.walker.starts);
   o.sweep.continuation.corrector.should_stop = stop_predicate(ctx);
   ctx.announce(feet * speeds + speeds + feet);
   ctx.add_curve(0, "best foot per speed", "speed");
@@ -127,17 +106,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   std::atomic<double> feet_seconds = 0.0;  // of the feet swept
   const auto on_foot = [&](std::size_t k, const studies::FootSweepSummary& s, const studies::SpeedSweepResult&) {
     const studies::ParametricProblem family = studies::walker_family(compared[k].model, job.walker.problem, "speed");
-    for (int i = 0; i < speeds; ++i) {
-      const studies::BestPoint& b = s.best[static_cast<std::size_t>(i)];
-      const storage::PointKey key{1 + static_cast<int>(k), i};
-      storage::SolutionPoint p = b.found ? point_of(family, b.point, key) : not_found(key, b);
-      records::ComparedSpeedRecord r;
-      r.foot = s.name;
-      if (b.found) r.found_by = studies::describe(b);
-      else r.reason = b.reason;
-      r.f_mech = s.f_mech[static_cast<std::size_t>(i)];
-      r.sweep_seconds = s.seconds;
-      p.values.update(nlohmann::json(r));
+    for (storage::SolutionPoint& p : best_points(family, s, 1 + static_cast<int>(k))) {
       ctx.store_point(p);
       stored[k].push_back(std::move(p));
     }
@@ -228,7 +197,7 @@ nlohmann::json comparison_job_json(const ComparisonJob& j) {
   r["reference"] = io::to_json(j.feet.front());
   r["feet"] = nlohmann::json::array();
   for (std::size_t k = 1; k < j.feet.size(); ++k) r["feet"].push_back(io::to_json(j.feet[k]));
-  r["continuation"] = {{"seed_speeds", j.seed_speeds}, {"min_trust_region", j.min_trust_region}};
+  r["continuation"] = sweep_fields_json(j.sweeps);
   return r;
 }
 
@@ -238,7 +207,7 @@ JobCost comparison_cost(const ComparisonJob& j) {
   for (const foot::FootSpec& f : j.feet) {
     WalkerJob w = j.walker;
     w.foot = f;
-    const JobCost c = walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.seed_speeds.size()));
+    const JobCost c = walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.sweeps.seed_speeds.size()));
     total.seconds += c.seconds;
     total.memory_bytes = std::max(total.memory_bytes, c.memory_bytes);
     total.field = c.field;

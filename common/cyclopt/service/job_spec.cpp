@@ -76,9 +76,9 @@ const std::vector<std::string>& known_scenes() {
   return v;
 }
 const std::vector<std::string>& known_tasks() {
-  static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart", "continuation",
-                                            "sweep",      "foot_sweep",      "foot_comparison", "foot_fit",
-                                            "giant_swing"};
+  static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart",  "continuation",
+                                            "sweep",      "foot_sweep",      "foot_comparison", "foot_design",
+                                            "foot_fit",   "giant_swing"};
   return v;
 }
 const std::vector<std::string>& known_objectives() {

@@ -8,8 +8,8 @@
 //    "limits": {"max_wall_seconds": 600, "max_iterations": 100000}}
 //
 // Common fields: scene (walker | giant_swing), task (evaluate | optimise | multistart |
-// continuation | sweep | foot_sweep | foot_comparison | giant_swing), and name, objective,
-// solver, limits (common_job_fields.hpp).
+// continuation | sweep | foot_sweep | foot_comparison | foot_design | foot_fit | giant_swing), and
+// name, objective, solver, limits (common_job_fields.hpp).
 
 #include "cyclopt/service/job_kind.hpp"
 

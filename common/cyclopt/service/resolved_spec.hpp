@@ -7,6 +7,7 @@
 //                  walker kinds (walker_job_json.hpp: foot as full parameters, speeds, start x,
 //                  solver, multistart, continuation), foot_sweep (foot, sweep values, samples),
 //                  foot_comparison (reference and feet as full parameters with their names),
+//                  foot_design (start foot, free parameters, bounds, densities, sweep fields),
 //                  foot_fit (trials, toe_bound), giant_swing (giant_swing_job_spec.hpp: every
 //                  option of the method, solver). Validated and resolved again, it is itself.
 //   seeds          every field named "seed" in the resolved spec, by path: {"multistart.seed": 1}

@@ -147,17 +147,19 @@ continuation::ContinuationResult run_from_json(const json& j) {
   return r;
 }
 
-studies::SweepJournal sweep_journal(JobContext& ctx) {
+studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix) {
   // Shared by the four functions; read once, when the sweep starts.
   const auto stored = std::make_shared<const std::map<std::string, std::string>>(ctx.stored_checkpoints());
   studies::SweepJournal j;
-  j.find_solve = [stored](int batch, int start) { return find(*stored, solve_key(batch, start), summary_from_json); };
-  j.record_solve = [&ctx](int batch, int start, const nlp::SolverSummary& s) {
-    ctx.store_checkpoint(solve_key(batch, start), summary_to_json(s).dump());
+  j.find_solve = [stored, prefix](int batch, int start) {
+    return find(*stored, prefix + solve_key(batch, start), summary_from_json);
   };
-  j.find_run = [stored](int run) { return find(*stored, run_key(run), run_from_json); };
-  j.record_run = [&ctx](int run, const continuation::ContinuationResult& r) {
-    ctx.store_checkpoint(run_key(run), run_to_json(r).dump());
+  j.record_solve = [&ctx, prefix](int batch, int start, const nlp::SolverSummary& s) {
+    ctx.store_checkpoint(prefix + solve_key(batch, start), summary_to_json(s).dump());
+  };
+  j.find_run = [stored, prefix](int run) { return find(*stored, prefix + run_key(run), run_from_json); };
+  j.record_run = [&ctx, prefix](int run, const continuation::ContinuationResult& r) {
+    ctx.store_checkpoint(prefix + run_key(run), run_to_json(r).dump());
   };
   return j;
 }

@@ -4,7 +4,8 @@
 // resumes with the solves and continuation runs it had finished (issue 19 item 5). Keys:
 //   "solve/<batch>/<start>"  one multistart solve (an nlp::SolverSummary)
 //   "run/<n>"                one continuation run (a continuation::ContinuationResult)
-// The walker multistart job uses the same journal for its single batch (batch 0).
+// The walker multistart job uses the same journal for its single batch (batch 0). A job of several
+// sweeps (foot_design_kind.hpp) gives each its own prefix: "<prefix>solve/...", "<prefix>run/...".
 // Values are JSON with every field, doubles in round-trip precision, so a replayed sweep takes the
 // same decisions as the uninterrupted one. An unreadable checkpoint is treated as absent.
 
@@ -16,7 +17,7 @@
 namespace cyclopt::service {
 
 // Reads the stored checkpoints once; the journal writes new ones through ctx.
-studies::SweepJournal sweep_journal(JobContext& ctx);
+studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix = "");
 
 nlohmann::json summary_to_json(const nlp::SolverSummary& s);
 nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception

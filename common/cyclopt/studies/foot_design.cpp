@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace cyclopt::studies {
@@ -27,6 +28,12 @@ std::string rho_text(double rho) {
   return buf;
 }
 
+std::string speed_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g m/s", v);
+  return buf;
+}
+
 // known: gaits of this foot solved already (the design's, seeding its fixed-foot sweep), if any.
 FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
                             const walker::GaitProblemOptions& problem, const SpeedSweepOptions& o,
@@ -34,6 +41,13 @@ FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<d
   SpeedSweepOptions with_known = o;
   with_known.known_gaits = std::move(known);
   return summarise_sweep(name, model, problem, speed_sweep(model, problem, with_known));
+}
+
+// The study's sweep options with the journal of `part`.
+SpeedSweepOptions journaled(const FootDesignOptions& o, const std::string& part) {
+  SpeedSweepOptions so = o.sweep;
+  if (o.journal) so.journal = o.journal(part);
+  return so;
 }
 
 // Saving of `foot` against `reference` (foot_comparison.hpp), NaN without a reference sweep.
@@ -52,7 +66,10 @@ class DesignStudy {
 
  private:
   bool step(const std::string& text) const { return !o_.on_step || o_.on_step(text); }
-  DesignOptimum optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m) const;
+  bool finished(const DensityDesign& d, DesignPhase phase) const { return !o_.on_density || o_.on_density(d, phase); }
+  walker::WalkerModel<double> model_of(const foot::FootSpec& foot) const { return walker::make_walker_model(foot, o_.constants); }
+  DesignOptimum optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m,
+                        const std::vector<nlp::SolverSummary>& runs) const;
   walker::GaitProblemOptions free_problem(double speed) const {
     walker::GaitProblemOptions po = problem_;
     po.speed = speed;
@@ -67,11 +84,15 @@ class DesignStudy {
   const std::vector<std::string> free_;
 };
 
-DesignOptimum DesignStudy::optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m) const {
+DesignOptimum DesignStudy::optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m,
+                                   const std::vector<nlp::SolverSummary>& runs) const {
   DesignOptimum d;
   d.objective = m.objective;
   d.z = m.x;
   d.starts = m.starts;
+  for (int i : m.starts)  // the best run that reached it, whose x it is
+    if (d.summary.x.size() == 0 || runs[static_cast<std::size_t>(i)].objective < d.summary.objective)
+      d.summary = runs[static_cast<std::size_t>(i)];
   const walker::WalkerModel<double> designed = shape.model_at(m.x);
   d.foot = start_;
   d.foot.parameters = designed.foot_parameters;
@@ -102,13 +123,16 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   const std::string name = rho_text(rho);
 
   // 1. Design multistart at the design speed.
-  if (!step(name + ": design multistart at " + std::to_string(o_.design_speed) + " m/s")) return d.stopped = true, d;
+  if (!step(name + ": design multistart at " + speed_text(o_.design_speed))) return d.stopped = true, d;
   foot::FootSpec start = start_;
   start.density = rho;
   start.theta_F0.reset();
   start.parameters = foot::project_into_design_bounds(start.model, start.parameters, o_.bounds, free_);
-  const walker::WalkerModel<double> model = walker::make_walker_model(start);
+  const walker::WalkerModel<double> model = model_of(start);
   const walker::GaitProblemOptions po = free_problem(o_.design_speed);
+  d.model = model;
+  d.problem = po;
+  const SweepJournal journal = o_.journal ? o_.journal(name + "/design") : SweepJournal{};
   const walker::GaitEvaluator ev(model);
   const Eigen::VectorXd centre = walker::gait_start(ev, o_.design_speed, {}).x;
   const walker::GaitProblem shape(model, po);
@@ -119,21 +143,23 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   mo.solver.sqp.difference_hessian = true;  // distant starts: W_1 of (6.24), as in the speed sweep
   mo.objective_tolerance = o_.objective_tolerance;
   mo.x_tolerance = o_.x_tolerance;
+  journal_multistart(mo, journal, 0);
+  if (o_.on_multistart_progress)
+    mo.on_progress = [&](int done, double best) { o_.on_multistart_progress(rho, done, best); };
   const nlp::MultistartResult r = nlp::multistart(
       [&] { return std::make_unique<walker::GaitProblem>(model, po); },
       [&](std::mt19937_64& rng) { return shape.initial_point(walker::perturbed_gait(ev, centre, o_.scale, rng)); }, mo);
   d.kkt_starts = r.successes;
   for (const nlp::MultistartOptimum& m : r.optima) {
-    d.optima.push_back(optimum(shape, rho, m));
+    d.optima.push_back(optimum(shape, rho, m, r.runs));
     const DesignClass c = d.optima.back().classification.design_class;
     ++d.class_counts[static_cast<int>(c)];
     if (d.best < 0 && c == DesignClass::admissible) d.best = static_cast<int>(d.optima.size()) - 1;
   }
   d.multistart_seconds = seconds_since(t0);
-  if (d.best < 0) {
-    d.seconds = seconds_since(t0);
-    return d;
-  }
+  if (d.best < 0) d.seconds = seconds_since(t0);
+  if (!finished(d, DesignPhase::multistart)) return d.stopped = true, d;
+  if (d.best < 0) return d;
   const DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];
 
   // 2. Free-foot continuation downwards from the design speed.
@@ -150,7 +176,16 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
     ContinuationOptions co = o_.sweep.continuation;
     co.corrector.max_iterations = std::min(co.corrector.max_iterations, o_.sweep.corrector_max_iterations);
     const ParametricProblem family = walker_family(model, po, "speed");
-    d.free_foot = continue_solution(family, best.z, grid, co);
+    // Run n of the journal, or computed (and recorded unless the job stopped it).
+    const auto run = [&](int n, const Eigen::VectorXd& x0, const std::vector<double>& values,
+                         const ContinuationOptions& options) {
+      if (std::optional<ContinuationResult> recorded = journal.find_run ? journal.find_run(n) : std::nullopt)
+        return std::move(*recorded);
+      ContinuationResult computed = continue_solution(family, x0, values, options);
+      if (computed.message != "stopped" && journal.record_run) journal.record_run(n, computed);
+      return computed;
+    };
+    d.free_foot = run(0, best.z, grid, co);
     // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s);
     // where the QPSQP run stopped, the rest of the grid is tried with the trivial predictor (warm
     // starts at each grid speed) from the lowest converged point.
@@ -165,7 +200,7 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
         ContinuationOptions trivial = co;
         trivial.predictor = continuation::Predictor::trivial;
         const Eigen::VectorXd x = last->x;
-        ContinuationResult more = continue_solution(family, x, rest, trivial);
+        ContinuationResult more = run(1, x, rest, trivial);
         d.free_foot.message += "; then the trivial predictor: " + more.message;
         d.free_foot.finished = more.finished;
         d.free_foot.points.insert(d.free_foot.points.end(), more.points.begin() + 1, more.points.end());
@@ -185,6 +220,7 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
     }
   }
   d.continuation_seconds = seconds_since(t1);
+  if (!finished(d, DesignPhase::free_foot)) return d.stopped = true, d;
 
   // 3. Fixed-foot sweeps of the feet optimal at the highest and the lowest speed.
   const Clock::time_point t2 = Clock::now();
@@ -192,17 +228,20 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   // Each sweep starts from its foot's own optimal gait (the free-foot optimum is a KKT point of the
   // fixed-foot problem too), then adds the seed multistarts: without it the sweep of the rho 10
   // design reached f_mech 0.0413 at 2.3 m/s where the design has 0.0344.
-  d.high = sweep_foot(name + " design", walker::make_walker_model(best.foot), problem_, o_.sweep,
+  d.high = sweep_foot(name + " design", model_of(best.foot), problem_, journaled(o_, name + "/high"),
                       {{o_.design_speed, best.z.head(gait_count)}});
-  if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
-  d.low = sweep_foot(name + " low-speed design", walker::make_walker_model(d.low_speed_foot), problem_, o_.sweep,
-                     {{d.low_speed, low_speed_gait}});
-  d.sweep_seconds = seconds_since(t2);
   d.saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.high);
   d.saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.high);
+  d.sweep_seconds = seconds_since(t2);
+  if (!finished(d, DesignPhase::high_sweep)) return d.stopped = true, d;
+  if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
+  d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_, journaled(o_, name + "/low"),
+                     {{d.low_speed, low_speed_gait}});
+  d.sweep_seconds = seconds_since(t2);
   d.low_saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.low);
   d.low_saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.low);
   d.seconds = seconds_since(t0);
+  if (!finished(d, DesignPhase::low_sweep)) d.stopped = true;
   return d;
 }
 
@@ -239,8 +278,12 @@ FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProb
     if (o.on_step && !o.on_step("references: start foot and point feet")) return result;
     foot::FootSpec own_masses = start;
     own_masses.density.reset();
-    result.start_foot = sweep_foot("start foot " + start.name, walker::make_walker_model(own_masses), problem, o.sweep);
-    result.point_feet = sweep_foot("point feet", walker::make_walker_model(foot::foot_preset("point").spec), problem, o.sweep);
+    const walker::WalkerModel<double> own = walker::make_walker_model(own_masses, o.constants);
+    result.start_foot = sweep_foot("start foot " + start.name, own, problem, journaled(o, "references/start foot"));
+    if (o.on_reference && !o.on_reference("references/start foot", own, result.start_foot)) return result;
+    const walker::WalkerModel<double> point = walker::make_walker_model(foot::foot_preset("point").spec, o.constants);
+    result.point_feet = sweep_foot("point feet", point, problem, journaled(o, "references/point feet"));
+    if (o.on_reference && !o.on_reference("references/point feet", point, result.point_feet)) return result;
     result.reference_seconds = seconds_since(t0);
   }
   DesignStudy study(start, problem, o, free);

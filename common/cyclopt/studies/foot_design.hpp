@@ -16,6 +16,11 @@
 // The references, swept once with the same options: the start foot with its own masses (Table
 // 5.1) and point feet (Table D.1). Savings are those of foot_comparison.hpp: 1 - mean f_mech of
 // the design / mean f_mech of the reference, over the grid speeds both reach.
+// Resume (sweep_journal.hpp): every part of the study has a journal of its own, named
+//   "references/start foot", "references/point feet"       the reference sweeps
+//   "rho R/design"   the design multistart (batch 0) and the free-foot runs (QPSQP run 0, trivial run 1)
+//   "rho R/high", "rho R/low"                              the fixed-foot sweeps of step 3
+// so a resumed study replays what an earlier attempt finished instead of solving it again.
 #include "cyclopt/foot/design_bounds.hpp"
 #include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/studies/design_class.hpp"
@@ -27,6 +32,11 @@
 #include <vector>
 
 namespace cyclopt::studies {
+
+struct DensityDesign;
+
+// The phases of one density, in order (FootDesignOptions::on_density).
+enum class DesignPhase { multistart, free_foot, high_sweep, low_sweep };
 
 struct FootDesignOptions {
   std::vector<double> densities{10, 20, 30, 40, 50, 60, 70};  // kg/m^2, each > 0
@@ -42,6 +52,18 @@ struct FootDesignOptions {
   // Grid (speeds), continuation and corrector of steps 2 and 3 and the references; its starts,
   // seed and scale are those of the fixed-foot sweeps. Its on_progress reports each sweep.
   SpeedSweepOptions sweep;
+  walker::WalkingConstants constants;   // P and M of every model of the study
+  // The journal of a part of the study (names above); empty: nothing is reused or recorded.
+  std::function<SweepJournal(const std::string& part)> journal;
+  // Results as they are found, for a caller that stores them; returning false stops the study.
+  // on_reference: each reference sweep (part as for the journal, the walker swept); on_density: a
+  // density's result so far after each of its phases ends.
+  std::function<bool(const std::string& part, const walker::WalkerModel<double>& model, const FootSweepSummary& sweep)>
+      on_reference;
+  std::function<bool(const DensityDesign& so_far, DesignPhase finished)> on_density;
+  // After every run of a design multistart (nlp::MultistartOptions::on_progress: runs taken so far
+  // of `starts`, best objective), from its worker threads, one call at a time.
+  std::function<void(double density, int runs_done, double best)> on_multistart_progress;
   // Called when a step begins: "references", "rho 10: design multistart", ... Returning false
   // stops the study (the result holds what was done).
   std::function<bool(const std::string& step)> on_step;
@@ -56,10 +78,15 @@ struct DesignOptimum {
   std::vector<std::string> active_bounds;  // rows of (10.1) within 1e-6 of their bound
   DesignClassification classification;
   std::vector<int> starts;           // multistart runs that reached it
+  nlp::SolverSummary summary;        // of the first of them
 };
 
 struct DensityDesign {
   double density = 0.0;
+  // The design problem: the start foot with the density, moved into (10.1), and the problem with
+  // the foot free under (10.1) at the design speed (the multistart's and step 2's, over the speed).
+  walker::WalkerModel<double> model;
+  walker::GaitProblemOptions problem;
   int kkt_starts = 0;                     // design multistart runs that reached a KKT point
   std::vector<DesignOptimum> optima;      // best first
   int best = -1;                          // index of the best admissible optimum, -1 if none

@@ -1,0 +1,33 @@
+#pragma once
+// The fields of the kinds that run several speed sweeps with the same options (foot_comparison,
+// foot_design): the walker fields (walker_job_spec.hpp) and
+//
+//   "continuation": {"seed_speeds": "0.3:1:2.3", "min_trust_region": 0.002, "corrector_max_iterations": 300}
+//
+// the sweeps' multistart speeds (default 0.3, 1.3, 2.3), Delta_min (Table 7.1) and the corrector's
+// MaxIter at each continuation point (studies::SpeedSweepOptions::corrector_max_iterations).
+#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/studies/speed_sweep.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+namespace cyclopt::service {
+
+struct SweepFields {
+  std::vector<double> seed_speeds{0.3, 1.3, 2.3};
+  double min_trust_region = continuation::ContinuationOptions{}.min_trust_region;
+  int corrector_max_iterations = studies::SpeedSweepOptions{}.corrector_max_iterations;
+};
+
+// Reads spec["continuation"] when present; throws SpecError naming the field.
+SweepFields parse_sweep_fields(const nlohmann::json& spec);
+// The "continuation" block with every field (for the resolved spec, resolved_spec.hpp).
+nlohmann::json sweep_fields_json(const SweepFields& fields);
+
+// The options of every sweep: the walker job's speeds, solver, seed and scale, `starts` runs per
+// seed speed.
+studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFields& fields, int starts);
+
+}  // namespace cyclopt::service

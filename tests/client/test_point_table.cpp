@@ -1,0 +1,49 @@
+// `cyclopt query` of a foot_design job (point_table.hpp): a density's row prints as one line with
+// its optima per class, design parameters, m_F, active bounds (10.1), mean f_mech, savings and
+// the speeds its sweep reached, read through records::DesignedFootRecord.
+#include "point_table.hpp"
+#include "row_table.hpp"
+
+#include "cyclopt/records/foot_design_records.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace cyclopt::client {
+namespace {
+
+TEST(PointTable, AFootDesignDensityIsOneLine) {
+  records::DesignedFootRecord d;
+  d.density = 10;
+  d.admissible = true;
+  d.starts = 20;
+  d.kkt_starts = 5;
+  d.admissible_optima = 2;
+  d.stilt_optima = 1;
+  d.best = 0;
+  d.design = {{{"h_F", 0.1}, {"l_HM", 0.4}}, 0.236, 0.103, 1.98e-3, 2.354};
+  d.active_bounds = {"l_HM_max - l_HM >= 0", "h_F_max - h_F >= 0"};
+  d.speeds = 21;
+  d.speeds_reached = 20;
+  d.mean_f_mech = 0.02975;
+  d.saving_vs_start = 0.203;
+  d.saving_vs_point = 0.67;
+  const nlohmann::json row = {{"curve", 0}, {"point", 0}, {"parameter", 10.0}, {"status", "ok"}, {"values", d}};
+  const auto s = point_summary(row);
+  ASSERT_TRUE(s);
+  EXPECT_EQ((*s)["optima_a/s/w/n"], "2/1/0/0");
+  EXPECT_EQ((*s)["active_bounds"], "l_HM_max, h_F_max");
+  EXPECT_EQ((*s)["speeds"], "20/21");
+  EXPECT_DOUBLE_EQ((*s)["l_HM"].get<double>(), 0.4);
+  std::ostringstream out;
+  print_rows(out, nlohmann::json::array({row}), RowFormat::table);
+  const std::string text = out.str();
+  std::printf("%s", text.c_str());
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2);  // header and the density
+  EXPECT_NE(text.find("20.3"), std::string::npos) << text;  // saving vs the start foot, %
+}
+
+}  // namespace
+}  // namespace cyclopt::client
