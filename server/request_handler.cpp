@@ -126,7 +126,7 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
     const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
-    const nlohmann::json resolved = service::resolved_spec(*v, spec);
+    const nlohmann::json resolved = service::resolved_spec(*v);
     // The parsed spec goes to the worker with the job: it is not parsed again.
     const storage::SubmitOutcome out = pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender,
                                                      cost.seconds, cli::git_revision(),

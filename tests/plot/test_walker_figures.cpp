@@ -298,12 +298,59 @@ TEST_F(WalkerFigures, ReportAnimatesEveryConvergedGaitWithoutJavaScript) {
   expect_ids_unique_per_page(html);
 }
 
+// Issue 17 item 9: the animation is drawn at a readable size and says what it shows and when: the
+// gait's speed and step, a clock reading the time in the loop and a bar filling over it.
+TEST_F(WalkerFigures, GaitAnimationHasAClockATimeBarAndItsGaitLabel) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const GaitPoint& p = *point_near(r, 1.2);
+  const std::string svg = gait_animation_svg(r, p, 10);
+  const double height = std::stod(svg.substr(svg.find("height=\"") + 8));
+  EXPECT_GE(height, 500) << "the walker is drawn 420 px high";
+  char label[160];
+  std::snprintf(label, sizeof label, "v = %.2f m/s, step length %.3f m, step period T = %.3f s", p.gait.mean_speed,
+                p.gait.step_length, p.trajectory->time.back());
+  EXPECT_NE(svg.find(label), std::string::npos) << label;
+  // The clock: one text per interval of the 2 x 10 poses, "t = 0.00 s" first (the static picture's),
+  // each visible during its interval of the loop.
+  const std::size_t clock = svg.find("<g id=\"gait-clock\"");
+  ASSERT_NE(clock, std::string::npos);
+  const std::string clock_group = svg.substr(clock, svg.find("</g>", clock) - clock);
+  std::size_t texts = 0;
+  for (std::size_t at = clock_group.find("<text"); at != std::string::npos; at = clock_group.find("<text", at + 1)) ++texts;
+  EXPECT_EQ(texts, 20u);
+  EXPECT_NE(clock_group.find("visibility=\"visible\">t = 0.00 s<animate attributeName=\"visibility\""), std::string::npos);
+  char last[48];
+  std::snprintf(last, sizeof last, "t = %.2f s", 19 * p.trajectory->time.back() / 10);
+  EXPECT_NE(clock_group.find(last), std::string::npos) << last;
+  char dur[48];
+  std::snprintf(dur, sizeof dur, "dur=\"%.4fs\"", 2 * p.trajectory->time.back());
+  std::size_t clocked = 0;
+  for (std::size_t at = clock_group.find(dur); at != std::string::npos; at = clock_group.find(dur, at + 1)) ++clocked;
+  EXPECT_EQ(clocked, 20u) << "every clock text runs with the gait's loop";
+  // The bar fills over the same loop and is marked at T.
+  const std::size_t bar = svg.find("<g id=\"gait-time-bar\"");
+  ASSERT_NE(bar, std::string::npos);
+  const std::string bar_group = svg.substr(bar, svg.find("</g>", bar) - bar);
+  EXPECT_NE(bar_group.find("<animate attributeName=\"width\" from=\"0\""), std::string::npos);
+  EXPECT_NE(bar_group.find(dur), std::string::npos);
+  char period[48];
+  std::snprintf(period, sizeof period, "T = %.3f s", p.trajectory->time.back());
+  EXPECT_NE(bar_group.find(period), std::string::npos);
+  // Several animations on one page keep their clocks apart (svg_ids.hpp).
+  const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
+  std::size_t clocks = 0;
+  for (const std::string& id : svg_ids(html)) clocks += id.find("gait-clock") != std::string::npos;
+  EXPECT_EQ(clocks, 2u);
+  expect_ids_unique_per_page(html);
+}
+
 // Issue 17: cairo names glyphs "glyph0-1" ... in every SVG; inlined unchanged, figures 2-5 of a
 // report drew figure 1's letters ("Cost ofrantphrhmei ml gr").
 TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) {
   const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
   const std::vector<std::string> svgs = inline_svgs(html);
-  // The figures, then one gait animation (no text) per converged speed (1.0 and 1.2 m/s).
+  // The figures, then one gait animation (its text not cairo's: no glyphs) per converged speed
+  // (1.0 and 1.2 m/s).
   ASSERT_EQ(svgs.size(), walker_figure_kinds().size() + 2);
   for (std::size_t i = 0; i < walker_figure_kinds().size(); ++i)
     ASSERT_NE(svgs[i].find("glyph"), std::string::npos) << "a figure without text";

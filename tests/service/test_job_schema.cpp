@@ -8,6 +8,7 @@
 
 #include "cyclopt/service/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/resolved_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,6 +65,13 @@ void expect_valid_specs(const std::vector<SpecSnippet>& snippets) {
     EXPECT_EQ(server_error(spec), "") << s.where << ": the server refuses " << s.text;
     const auto errors = job_schema().errors(spec);
     EXPECT_TRUE(errors.empty()) << s.where << ": the schema refuses " << s.text << joined(errors);
+    if (!server_error(spec).empty()) continue;
+    // Its resolved spec (service/resolved_spec.hpp) is a spec to submit again: valid as well.
+    const json resolved = service::resolved_spec(service::validate_job_spec(spec, registry()));
+    EXPECT_EQ(server_error(resolved), "") << s.where << ": the server refuses the resolved " << resolved.dump();
+    const auto resolved_errors = job_schema().errors(resolved);
+    EXPECT_TRUE(resolved_errors.empty()) << s.where << ": the schema refuses the resolved " << resolved.dump()
+                                         << joined(resolved_errors);
   }
 }
 

@@ -1,15 +1,25 @@
 // Issue 17 item 7, reproducible results: every job the server accepts is stored with the git
 // revision of the server, the random seeds it uses and its spec with every default filled in
-// (service/resolved_spec.hpp), and that resolved spec, submitted again, is the same job. A walker
+// (service/resolved_spec.hpp), and that resolved spec, submitted again, is the same job, for
+// every kind. A walker
 // job can start from a point an earlier job stored (service/stored_start.hpp); a bad reference is
 // rejected naming its field.
 #include "cyclopt/cli/version.hpp"
+#include "cyclopt/foot/fitted_feet.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/foot_fit/synthetic_trials.hpp"
+#include "cyclopt/io/foot_fit_json.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/service/giant_swing_job_spec.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 #include "cyclopt/service/stored_start.hpp"
+#include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 
 #include <gtest/gtest.h>
+
+#include <set>
 
 namespace cyclopt {
 namespace {
@@ -49,10 +59,27 @@ TEST_F(ReproducibleJobs, AStoredJobRecordsTheVersionTheSeedsAndTheResolvedSpec) 
   ASSERT_TRUE(done);
 }
 
-// The resolved spec of each walker kind is itself a valid spec that resolves to itself: the
-// defaults it spells out are the ones the job ran with.
+// The resolved spec of `spec`, checked to be a fixed point: validated and resolved again, it is
+// itself (the defaults it spells out are the ones the job ran with).
+nlohmann::json resolved_fixed_point(const nlohmann::json& spec) {
+  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  const nlohmann::json first = service::resolved_spec(service::validate_job_spec(spec, kinds));
+  nlohmann::json again;
+  EXPECT_NO_THROW(again = service::resolved_spec(service::validate_job_spec(first, kinds))) << first.dump();
+  EXPECT_EQ(again, first) << "submitted " << spec.dump();
+  EXPECT_LE(first.dump().size(), channels::kMaxSpecBytes) << "the resolved spec is too large to submit again";
+  return first;
+}
+
+// The keys of a JSON object.
+std::set<std::string> keys(const nlohmann::json& j) {
+  std::set<std::string> k;
+  for (const auto& [key, value] : j.items()) k.insert(key);
+  return k;
+}
+
+// The resolved spec of each walker kind is itself a valid spec that resolves to itself.
 TEST(ResolvedSpec, TheResolvedSpecOfAWalkerJobIsTheSameJob) {
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
   const std::vector<nlohmann::json> specs = {
       {{"scene", "walker"}, {"task", "evaluate"}, {"foot", "point"}, {"speed", 1.0}},
       {{"scene", "walker"}, {"task", "optimise"}, {"foot", "P1-barefoot-left-HM"}, {"speed", 1.3},
@@ -68,15 +95,138 @@ TEST(ResolvedSpec, TheResolvedSpecOfAWalkerJobIsTheSameJob) {
        {"multistart", {{"seed", 9}}}, {"continuation", {{"seed_speeds", 1.0}}}},
   };
   for (const nlohmann::json& spec : specs) {
-    const nlohmann::json first = service::resolved_spec(service::validate_job_spec(spec, kinds), spec);
-    EXPECT_FALSE(first.contains("resolved")) << first.dump();
+    const nlohmann::json first = resolved_fixed_point(spec);
     if (spec.contains("design_bounds")) {
       EXPECT_EQ(first["design_bounds"]["l_HM_max"], 0.3) << first.dump();
     }
-    nlohmann::json again;
-    ASSERT_NO_THROW(again = service::resolved_spec(service::validate_job_spec(first, kinds), first)) << first.dump();
-    EXPECT_EQ(again, first);
+    const std::string task = spec["task"];
+    const nlohmann::json seeds = service::random_seeds(first);
+    if (task == "multistart" || task == "sweep") {  // the kinds that draw random starts
+      EXPECT_EQ(seeds, (nlohmann::json{{"multistart.seed", spec["multistart"].value("seed", 1)}})) << first.dump();
+    } else {
+      EXPECT_EQ(seeds, nlohmann::json::object()) << first.dump();
+    }
   }
+}
+
+TEST(ResolvedSpec, AFootSweepSpellsOutItsFootGridAndSamples) {
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_sweep"}, {"foot", "P2-shoes-left-HMT"},
+                               {"sweep", {{"parameter", "density"}, {"values", "20:20:60"}}}};
+  const nlohmann::json r = resolved_fixed_point(spec);
+  std::printf("resolved foot_sweep spec: %s\n", r.dump().c_str());
+  EXPECT_EQ(keys(r), (std::set<std::string>{"scene", "task", "foot", "sweep", "samples", "point_delay_ms"}));
+  EXPECT_EQ(r["foot"], io::to_json(foot::foot_preset("P2-shoes-left-HMT").spec));  // the preset's parameters
+  EXPECT_EQ(r["sweep"], (nlohmann::json{{"parameter", "density"}, {"values", {20.0, 40.0, 60.0}}}));
+  EXPECT_EQ(r["samples"], 13);
+  EXPECT_EQ(r["point_delay_ms"], 0);
+  EXPECT_EQ(service::random_seeds(r), nlohmann::json::object());
+}
+
+// The feet as full parameters under the names the results use (preset name, spec name or field
+// path); by default the 16 feet of seed 001 section 9.2 against the point foot.
+TEST(ResolvedSpec, AFootComparisonSpellsOutEveryFootAndTheSweepDefaults) {
+  const nlohmann::json r = resolved_fixed_point(
+      {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.5:0.5:1.0"}});
+  std::printf("resolved foot_comparison spec: %zu bytes\n", r.dump().size());
+  EXPECT_EQ(keys(r), (std::set<std::string>{"scene", "task", "speeds", "objective", "points", "bezier_degree",
+                                            "quadrature", "solver", "multistart", "reference", "feet",
+                                            "continuation"}));
+  EXPECT_EQ(r["reference"], (nlohmann::json{{"model", "point"}, {"name", "point"}}));
+  const auto section_9_2 = foot::select_fitted_feet({.section_9_2_only = true});
+  ASSERT_EQ(r["feet"].size(), section_9_2.size());
+  for (std::size_t k = 0; k < section_9_2.size(); ++k) {
+    nlohmann::json expected = io::to_json(section_9_2[k]->spec);
+    expected["name"] = section_9_2[k]->name();
+    EXPECT_EQ(r["feet"][k], expected);
+  }
+  EXPECT_EQ(r["speeds"], (nlohmann::json{0.5, 1.0}));
+  EXPECT_EQ(r["points"], 200);
+  EXPECT_EQ(r["bezier_degree"], 6);
+  EXPECT_EQ(r["objective"], "f_mech");
+  EXPECT_EQ(r["quadrature"], "trapezoid");
+  EXPECT_EQ(r["solver"], (nlohmann::json{{"solver", "sqp"}, {"max_iterations", 2000}, {"optimality_tolerance", 1e-5},
+                                         {"constraint_tolerance", 1e-10}, {"print_level", 0}}));
+  EXPECT_EQ(r["multistart"], (nlohmann::json{{"starts", 20}, {"seed", 1}, {"scale", 0.05}}));
+  EXPECT_EQ(r["continuation"]["seed_speeds"], (nlohmann::json{0.3, 1.3, 2.3}));
+  EXPECT_TRUE(r["continuation"].contains("min_trust_region"));
+  EXPECT_EQ(service::random_seeds(r), (nlohmann::json{{"multistart.seed", 1}}));
+
+  nlohmann::json unnamed = io::to_json(foot::foot_preset("P1-barefoot-left-HM").spec);
+  unnamed.erase("name");
+  const nlohmann::json given = resolved_fixed_point(
+      {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", {0.8, 1.2}}, {"reference", "P1-shoes-left-HMT-SG"},
+       {"feet", {"P1-shoes-left-HM-SG", unnamed}}, {"multistart", {{"seed", 5}}}});
+  EXPECT_EQ(given["reference"]["name"], "P1-shoes-left-HMT-SG");
+  EXPECT_EQ(given["reference"]["model"], "HMT");
+  ASSERT_EQ(given["feet"].size(), 2u);
+  EXPECT_EQ(given["feet"][0]["name"], "P1-shoes-left-HM-SG");
+  EXPECT_EQ(given["feet"][1]["name"], "feet[1]");
+  EXPECT_EQ(service::random_seeds(given), (nlohmann::json{{"multistart.seed", 5}}));
+}
+
+// Every option of the method: the bezier ones and the solver, or the seed method's weights,
+// tolerance and Nelder-Mead settings.
+TEST(ResolvedSpec, AGiantSwingSpellsOutEveryOptionOfItsMethod) {
+  const nlohmann::json bezier = resolved_fixed_point({{"scene", "giant_swing"}, {"task", "giant_swing"}, {"motion", "periodic"}});
+  std::printf("resolved giant_swing spec: %s\n", bezier.dump().c_str());
+  EXPECT_EQ(keys(bezier), (std::set<std::string>{"scene", "task", "motion", "method", "options", "solver"}));
+  EXPECT_EQ(bezier["method"], "bezier");
+  EXPECT_EQ(keys(bezier["options"]),
+            (std::set<std::string>{"name", "omega_deg_s", "initial_rate_deg_s", "rounds", "alpha_min_deg", "alpha_max_deg",
+                                   "free_coefficients", "steps", "min_rate_fraction"}));
+  EXPECT_EQ(bezier["options"]["name"], "periodic_sequence");  // the task's default name
+  EXPECT_EQ(bezier["options"]["rounds"], 10);
+  EXPECT_EQ(bezier["options"]["free_coefficients"], 8);
+  EXPECT_EQ(bezier["options"]["steps"], 200);
+  EXPECT_EQ(bezier["options"]["min_rate_fraction"], 0.05);
+  EXPECT_EQ(bezier["solver"]["solver"], "ipopt");
+  EXPECT_EQ(bezier["solver"]["max_iterations"], 200);
+  EXPECT_EQ(bezier["solver"]["optimality_tolerance"], 1e-8);
+  EXPECT_EQ(service::random_seeds(bezier), nlohmann::json::object());
+
+  const nlohmann::json spec = {{"scene", "giant_swing"}, {"task", "giant_swing"}, {"motion", "accelerating"},
+                               {"method", "seed"}, {"options", {{"omega_deg_s", 40}, {"weights", {{"jerk", 0.01}}}}}};
+  const nlohmann::json seed = resolved_fixed_point(spec);
+  EXPECT_EQ(keys(seed), (std::set<std::string>{"scene", "task", "motion", "method", "options"}));  // no NLP solver
+  EXPECT_EQ(keys(seed["options"]), (std::set<std::string>{"name", "omega_deg_s", "initial_rate_deg_s", "rounds", "alpha_min_deg",
+                                                          "alpha_max_deg", "weights", "relative_tolerance", "optimiser"}));
+  EXPECT_EQ(seed["options"]["weights"]["jerk"], 0.01);
+  EXPECT_EQ(seed["options"]["optimiser"]["support_points"], 4);
+  // The same task, to the last bit.
+  const service::GiantSwingJob submitted = service::parse_giant_swing_job(spec, {});
+  const service::GiantSwingJob resolved = service::parse_giant_swing_job(seed, {});
+  EXPECT_EQ(resolved.task.omega, submitted.task.omega);
+  EXPECT_EQ(resolved.task.initial_rate, submitted.task.initial_rate);
+  EXPECT_EQ(resolved.task.ranges.alpha_min, submitted.task.ranges.alpha_min);
+  EXPECT_EQ(resolved.task.ranges.alpha_max, submitted.task.ranges.alpha_max);
+  EXPECT_EQ(service::random_seeds(seed), nlohmann::json::object());
+}
+
+TEST(ResolvedSpec, AFootFitSpellsOutItsTrialsAndTheToeBound) {
+  const foot::FootSpec foot = foot::foot_preset("P1-shoes-left-HMT").spec;
+  foot_fit::SyntheticTrialOptions o;
+  o.foot_angle = foot_fit::default_foot_angle_history(foot);
+  const std::vector<foot_fit::AnkleTrack> tracks = {foot_fit::ankle_track(foot_fit::synthetic_trial(foot, o))};
+  nlohmann::json spec = io::foot_fit_job_spec(tracks);
+  spec.erase("toe_bound");
+  const nlohmann::json r = resolved_fixed_point(spec);
+  EXPECT_EQ(keys(r), (std::set<std::string>{"scene", "task", "trials", "toe_bound"}));
+  EXPECT_EQ(r["toe_bound"], true);
+  EXPECT_EQ(r["trials"], spec["trials"]);  // as submitted (at the 10 um of foot_fit_job_spec)
+  EXPECT_EQ(service::random_seeds(r), nlohmann::json::object());
+}
+
+// The start foot as given (full parameters), the free foot parameters and bounds (10.1), every
+// design and sweep field.
+TEST(ResolvedSpec, AFootDesignSpellsOutItsStartFootDesignAndSweepFields) {
+  const nlohmann::json r = resolved_fixed_point({{"scene", "walker"}, {"task", "foot_design"}});
+  EXPECT_EQ(r["foot"], io::to_json(foot::foot_preset("P2-shoes-left-HMT").spec));
+  for (const char* key : {"speeds", "free_parameters", "design_bounds", "densities", "design_speed", "references",
+                          "sweep_starts", "continuation", "solver", "multistart", "points", "bezier_degree"})
+    EXPECT_TRUE(r.contains(key)) << key << " missing in " << r.dump();
+  EXPECT_EQ(r["design_speed"], 2.3);
+  EXPECT_EQ(r["continuation"]["seed_speeds"], (nlohmann::json{0.3, 1.3, 2.3}));
+  EXPECT_EQ(service::random_seeds(r), (nlohmann::json{{"multistart.seed", 1}}));
 }
 
 TEST(ResolvedSpec, SeedsAreTheFieldsNamedSeed) {
@@ -85,14 +235,12 @@ TEST(ResolvedSpec, SeedsAreTheFieldsNamedSeed) {
   EXPECT_EQ(service::random_seeds({{"speed", 1.0}}), nlohmann::json::object());
 }
 
-// A kind without a resolver stores its fields as submitted and says that they are not resolved.
-TEST(ResolvedSpec, AKindWithoutAResolverSaysSo) {
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  const nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_sweep"}, {"foot", "P2-shoes-left-HMT"},
-                               {"sweep", {{"parameter", "density"}, {"values", "20:20:60"}}}};
-  const nlohmann::json r = service::resolved_spec(service::validate_job_spec(spec, kinds), spec);
-  EXPECT_EQ(r["resolved"], false);
-  EXPECT_EQ(r["sweep"], spec["sweep"]);
+// Every kind resolves its spec: a kind without resolve is not registered.
+TEST(ResolvedSpec, AKindWithoutAResolverIsRefused) {
+  service::JobKind kind = *service::builtin_job_kinds().find("foot_sweep");
+  kind.resolve = {};
+  service::JobKindRegistry registry;
+  EXPECT_THROW(registry.add(kind), std::logic_error);
 }
 
 // Re-running what a job found: an optimise job at the same speed, started from the optimum an

@@ -36,6 +36,7 @@ service::JobKind counting_kind(std::shared_ptr<std::atomic<int>> parses) {
         p.parameter = s.value;
         ctx.store_point(p);
       },
+      [](const CountedSpec& s) { return nlohmann::json{{"value", s.value}}; },
       [](const CountedSpec& s) {
         service::JobCost c;
         c.seconds = s.value;
@@ -133,7 +134,7 @@ TEST(TypedJobKind, RefusesASpecAnotherKindParsed) {
   const service::JobKind counting = counting_kind(parses);
   const service::JobKind other = service::typed_job_kind<int>(
       "optimise", {"walker"}, {}, [](const nlohmann::json&, const service::CommonJobFields&) { return 7; },
-      [](const int&, service::JobContext&) {});
+      [](const int&, service::JobContext&) {}, [](const int&) { return nlohmann::json::object(); });
   const auto foreign = other.parse(nlohmann::json::object(), {});
   const auto own = counting.parse(nlohmann::json{{"value", 2.5}}, {});
   EXPECT_EQ(*parses, 1);

@@ -4,6 +4,7 @@
 #include "cyclopt/plot/walker_pose.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -11,8 +12,54 @@
 namespace cyclopt::plot {
 namespace {
 
-constexpr double kHeight = 300;  // px of the drawing between its lowest and highest point
+constexpr double kHeight = 420;  // px of the drawing between its lowest and highest point
 constexpr double kMargin = 16;   // px around it
+constexpr double kHeader = 56;   // px above it: the gait's speed and step, and the clock
+constexpr double kFooter = 48;   // px below the ground: the time bar and its marks
+constexpr double kMinWidth = 520;  // px, so that the header fits
+constexpr const char* kFont = "font-family=\"DejaVu Sans,Helvetica,Arial,sans-serif\" fill=\"#1a1a1a\"";
+
+std::string format(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// The clock "t = ... s": one <text> per interval between two poses, shown during its interval
+// only (SMIL animates attributes, not text content); the first is also the static picture's.
+std::string clock_svg(int intervals, double dt, const std::string& duration, double x, double y) {
+  std::string svg = "<g id=\"gait-clock\" " + std::string(kFont) + " font-size=\"17\" font-weight=\"bold\">\n";
+  for (int k = 0; k < intervals; ++k) {
+    const std::string from = format("%.6f", static_cast<double>(k) / intervals),
+                      to = format("%.6f", static_cast<double>(k + 1) / intervals);
+    std::string values = "hidden;visible;hidden", times = "0;" + from + ";" + to;
+    if (k == 0) values = "visible;hidden", times = "0;" + to;
+    if (k + 1 == intervals) values = k == 0 ? "visible" : "hidden;visible", times = k == 0 ? "0" : "0;" + from;
+    svg += format("<text x=\"%.1f\"", x) + format(" y=\"%.1f\"", y) + " visibility=\"" + (k == 0 ? "visible" : "hidden") +
+           "\">t = " + format("%.2f", k * dt) + " s<animate attributeName=\"visibility\" calcMode=\"discrete\" dur=\"" +
+           duration + "\" repeatCount=\"indefinite\" values=\"" + values + "\" keyTimes=\"" + times + "\"/></text>\n";
+  }
+  return svg + "</g>\n";
+}
+
+// The time bar: fills from left to right over the loop of two steps, marked at 0, T and 2 T.
+std::string time_bar_svg(double period, const std::string& duration, double x0, double x1, double y) {
+  const double mid = 0.5 * (x0 + x1);
+  std::string svg = "<g id=\"gait-time-bar\">\n";
+  svg += format("<rect x=\"%.1f\"", x0) + format(" y=\"%.1f\"", y) + format(" width=\"%.1f\"", x1 - x0) +
+         " height=\"8\" fill=\"#e6e6e6\" stroke=\"#999999\" stroke-width=\"0.5\"/>\n";
+  svg += format("<rect x=\"%.1f\"", x0) + format(" y=\"%.1f\"", y) +
+         " width=\"0\" height=\"8\" fill=\"#404040\"><animate attributeName=\"width\" from=\"0\" to=\"" +
+         format("%.1f", x1 - x0) + "\" dur=\"" + duration + "\" repeatCount=\"indefinite\"/></rect>\n";
+  for (const double x : {x0, mid, x1})
+    svg += format("<line x1=\"%.1f\"", x) + format(" y1=\"%.1f\"", y - 3) + format(" x2=\"%.1f\"", x) +
+           format(" y2=\"%.1f\"", y + 11) + " stroke=\"#404040\" stroke-width=\"1.5\"/>\n";
+  const std::string text = "<text " + std::string(kFont) + " font-size=\"13\"" + format(" y=\"%.1f\"", y + 26);
+  svg += text + format(" x=\"%.1f\"", x0) + ">0 s</text>\n";
+  svg += text + format(" x=\"%.1f\"", mid) + " text-anchor=\"middle\">T = " + format("%.3f", period) + " s, step 2</text>\n";
+  svg += text + format(" x=\"%.1f\"", x1) + " text-anchor=\"end\">2T = " + format("%.3f", 2 * period) + " s</text>\n";
+  return svg + "</g>\n";
+}
 
 // The drawn parts of one pose, legs named by leg (A: stance in even steps), not by role.
 struct Parts {
@@ -56,13 +103,15 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
           z1 = std::max(z1, q[1]);
         }
     }
-  const double scale = kHeight / z1, width = (x1 - x0) * scale + 2 * kMargin, height = kHeight + 2 * kMargin;
+  const double scale = kHeight / z1, drawing = (x1 - x0) * scale + 2 * kMargin, width = std::max(drawing, kMinWidth);
+  const double left = 0.5 * (width - drawing) + kMargin, ground = kHeader + kMargin + kHeight;
+  const double height = ground + kFooter;
   auto points = [&](const std::vector<Xz>& pts) {
     std::string s;
     char b[48];
     for (const Xz& q : pts) {
       if (!s.empty()) s += ' ';
-      std::snprintf(b, sizeof b, "%.1f,%.1f", kMargin + (q[0] - x0) * scale, kMargin + (z1 - q[1]) * scale);
+      std::snprintf(b, sizeof b, "%.1f,%.1f", left + (q[0] - x0) * scale, ground - q[1] * scale);
       s += b;
     }
     return s;
@@ -72,8 +121,12 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n"
                 "<rect width=\"100%%\" height=\"100%%\" fill=\"#ffffff\"/>\n"
                 "<line x1=\"0\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"#59402a\" stroke-width=\"2\"/>\n",
-                width, height + 8, width, height + 8, kMargin + z1 * scale, width, kMargin + z1 * scale);
+                width, height, width, height, ground, width, ground);
   std::string svg = std::string(head);
+  const double speed = std::isfinite(point.gait.mean_speed) ? point.gait.mean_speed : step / period;
+  svg += "<text x=\"" + format("%.1f", kMargin) + "\" y=\"22\" " + kFont + " font-size=\"15\">v = " +
+         format("%.2f", speed) + " m/s, step length " + format("%.3f", step) + " m, step period T = " +
+         format("%.3f", period) + " s</text>\n";
   char duration[32];
   std::snprintf(duration, sizeof duration, "%.4fs", 2 * period);  // real time: two steps
   auto animated = [&](const std::string& element, const std::string& style, std::vector<Xz> Parts::*part) {
@@ -93,6 +146,8 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
   animated("polygon", "fill=\"#d65f00\" fill-opacity=\"0.15\" stroke=\"#d65f00\" stroke-width=\"1.5\"", &Parts::foot_b);
   animated("polyline", line + " stroke=\"#1f77b5\" stroke-width=\"3\"", &Parts::leg_a);
   animated("polygon", "fill=\"#1f77b5\" fill-opacity=\"0.15\" stroke=\"#1f77b5\" stroke-width=\"1.5\"", &Parts::foot_a);
+  svg += clock_svg(2 * frames_per_step, dt, duration, kMargin, 47);
+  svg += time_bar_svg(period, duration, kMargin, width - kMargin, ground + 10);
   return svg + "</svg>\n";
 }
 

@@ -57,7 +57,8 @@ Report walker_job_report(const nlohmann::json& doc) {
   ReportSection animations;
   animations.heading = "Gait animations";
   animations.text = "Two steps of the gait at every converged speed in real time, looping (animated SVG); leg A blue, "
-                    "leg B orange.";
+                    "leg B orange. The clock reads the time since the loop began; the bar below the ground fills over "
+                    "the two steps, marked at the step period T.";
   for (const GaitPoint& p : r.points)
     if (p.converged && p.trajectory)
       animations.figures.push_back({"v = " + report_number(p.gait.mean_speed, "%.2f") + " m/s, step length " +

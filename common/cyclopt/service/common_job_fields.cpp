@@ -54,6 +54,14 @@ nlp::SolverOptions SolverOverrides::applied_to(const nlp::SolverOptions& base) c
   return o;
 }
 
+nlohmann::json solver_json(const nlp::SolverOptions& options) {
+  return {{"solver", nlp::to_string(options.solver)},
+          {"max_iterations", options.max_iterations},
+          {"optimality_tolerance", options.optimality_tolerance},
+          {"constraint_tolerance", options.constraint_tolerance},
+          {"print_level", options.print_level}};
+}
+
 const std::vector<std::string>& common_job_field_names() {
   static const std::vector<std::string> v = {"scene", "task", "name", "objective", "solver", "limits"};
   return v;

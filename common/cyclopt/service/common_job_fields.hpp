@@ -33,6 +33,10 @@ struct SolverOverrides {
   nlp::SolverOptions applied_to(const nlp::SolverOptions& base) const;
 };
 
+// The "solver" block that sets every one of the fields above to `options`' (for a resolved spec,
+// resolved_spec.hpp): applied to any base, it gives `options` in those fields.
+nlohmann::json solver_json(const nlp::SolverOptions& options);
+
 // The spec's "limits": what the submitter asked for, before the server's caps.
 struct RequestedLimits {
   std::optional<double> max_wall_seconds;

@@ -8,6 +8,7 @@
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/sweep_fields.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/foot_comparison.hpp"
 #include "cyclopt/studies/walker_family.hpp"
@@ -24,14 +25,17 @@ namespace {
 
 struct ComparisonJob {
   WalkerJob walker;                       // the common fields; walker.foot is the reference
-  std::vector<std::string> names;         // reference first, then the compared feet
-  std::vector<foot::FootSpec> feet;       // same order
+  std::vector<foot::FootSpec> feet;       // the reference first, then the compared feet
   SweepFields sweeps;                     // "continuation"
 };
 
-std::string foot_name(const nlohmann::json& v, const foot::FootSpec& spec, const std::string& path) {
-  if (v.is_string()) return v.get<std::string>();
-  return spec.name.empty() ? path : spec.name;
+// A compared foot is known by its preset name, else by its spec's name, else by its field path.
+// That name becomes its spec's name, so that the resolved spec (the feet as full parameters)
+// names the feet as the submitted one did.
+foot::FootSpec named(foot::FootSpec spec, const nlohmann::json& v, const std::string& path) {
+  if (v.is_string()) spec.name = v.get<std::string>();
+  else if (spec.name.empty()) spec.name = path;
+  return spec;
 }
 
 ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFields& common_fields) {
@@ -53,7 +57,7 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
     throw SpecError("reference" + e.field().substr(4), e.what());
   }
   if (j.walker.speeds.size() < 2) throw SpecError("speeds", "needs at least two values");
-  j.names.push_back(foot_name(common["foot"], j.walker.foot, "reference"));
+  j.walker.foot = named(j.walker.foot, common["foot"], "reference");
   j.feet.push_back(j.walker.foot);
   if (spec.contains("feet")) {
     const nlohmann::json& f = spec["feet"];
@@ -61,21 +65,20 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
       throw SpecError("feet", "must be an array of 1-64 foot preset names or foot specs");
     for (std::size_t i = 0; i < f.size(); ++i) {
       const std::string path = "feet[" + std::to_string(i) + "]";
-      j.feet.push_back(foot_value(f[i], path));
-      j.names.push_back(foot_name(f[i], j.feet.back(), path));
+      j.feet.push_back(named(foot_value(f[i], path), f[i], path));
     }
   } else {  // seed 001 section 9.2
     for (const foot::FittedFoot* f : foot::select_fitted_feet({.section_9_2_only = true})) {
-      j.names.push_back(f->name());
       j.feet.push_back(f->spec);
+      j.feet.back().name = f->name();
     }
   }
   j.sweeps = parse_sweep_fields(spec);
   std::set<std::string> seen;
-  for (std::size_t i = 0; i < j.names.size(); ++i)
-    if (!seen.insert(j.names[i]).second)
+  for (std::size_t i = 0; i < j.feet.size(); ++i)
+    if (!seen.insert(j.feet[i].name).second)
       throw SpecError(i == 0 ? "reference" : "feet[" + std::to_string(i - 1) + "]",
-                      "foot '" + j.names[i] + "' is compared twice");
+                      "foot '" + j.feet[i].name + "' is compared twice");
   return j;
 }
 
@@ -86,7 +89,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   for (int k = 0; k < feet; ++k) {
     WalkerJob w = job.walker;
     w.foot = job.feet[static_cast<std::size_t>(k)];
-    compared.push_back({job.names[static_cast<std::size_t>(k)], w.model()});
+    compared.push_back({job.feet[static_cast<std::size_t>(k)].name, w.model()});
   }
   studies::FootComparisonOptions o;
   o.reference = 0;
@@ -95,7 +98,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   ctx.announce(feet * speeds + speeds + feet);
   ctx.add_curve(0, "best foot per speed", "speed");
   for (int k = 0; k < feet; ++k)
-    ctx.add_curve(1 + k, "foot " + job.names[static_cast<std::size_t>(k)] + (k == 0 ? " (reference)" : ""), "speed");
+    ctx.add_curve(1 + k, "foot " + job.feet[static_cast<std::size_t>(k)].name + (k == 0 ? " (reference)" : ""), "speed");
   ctx.add_curve(feet + 1, "mean f_mech per foot", "curve");
   std::vector<std::vector<storage::SolutionPoint>> stored(static_cast<std::size_t>(feet));
   std::atomic<std::size_t> running = 0;  // the foot being swept (read by multistart workers too)
@@ -118,7 +121,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   o.sweep.on_progress = [&](const studies::SweepProgress& sp) {
     const std::size_t k = running;
     ProgressReport r = sweep_progress_report(
-        sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " + job.names[k]);
+        sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " + job.feet[k].name);
     r.curve_id = 1 + static_cast<int>(k);
     r.points_done = static_cast<int>(k) * speeds + sp.speeds_reached;
     r.points_total = feet * speeds;
@@ -184,6 +187,20 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   }
 }
 
+// The resolved spec (resolved_spec.hpp): the walker fields of a sweep but "foot" and
+// "free_parameters" (not fields of this kind), the reference and the feet as their full
+// parameters and names (the 16 of section 9.2 when none were given), the continuation block.
+nlohmann::json comparison_job_json(const ComparisonJob& j) {
+  nlohmann::json r = walker_job_json(j.walker, true, true);
+  r.erase("foot");
+  r.erase("free_parameters");
+  r["reference"] = io::to_json(j.feet.front());
+  r["feet"] = nlohmann::json::array();
+  for (std::size_t k = 1; k < j.feet.size(); ++k) r["feet"].push_back(io::to_json(j.feet[k]));
+  r["continuation"] = sweep_fields_json(j.sweeps);
+  return r;
+}
+
 // One speed sweep per foot, one after the other.
 JobCost comparison_cost(const ComparisonJob& j) {
   JobCost total;
@@ -209,7 +226,7 @@ JobKind foot_comparison_kind() {
     if (f != "foot" && f != "start" && f != "free_parameters") fields.push_back(f);
   fields.insert(fields.end(), {"feet", "reference", "continuation"});
   return typed_job_kind<ComparisonJob>("foot_comparison", {"walker"}, fields, parse_comparison_job, run_comparison,
-                                       comparison_cost);
+                                       comparison_job_json, comparison_cost);
 }
 
 }  // namespace cyclopt::service

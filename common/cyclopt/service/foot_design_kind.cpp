@@ -1,6 +1,7 @@
 #include "cyclopt/service/foot_design_kind.hpp"
 
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/solver_progress.hpp"
@@ -9,6 +10,7 @@
 #include "cyclopt/service/sweep_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
+#include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
 #include "cyclopt/studies/foot_design.hpp"
@@ -365,6 +367,20 @@ JobCost design_cost(const DesignJob& j) {
   return c;
 }
 
+// The resolved spec (resolved_spec.hpp): the walker fields of a sweep with the start foot as
+// given (as its full parameters) and the free foot parameters and design bounds spelled out, and
+// every design field.
+nlohmann::json design_job_json(const DesignJob& j) {
+  nlohmann::json r = walker_job_json(j.walker, true, true);
+  r["foot"] = io::to_json(j.start_foot);
+  r["densities"] = j.densities;
+  r["design_speed"] = j.design_speed;
+  r["references"] = j.references;
+  r["sweep_starts"] = j.sweep_starts;
+  r["continuation"] = sweep_fields_json(j.sweeps);
+  return r;
+}
+
 }  // namespace
 
 FootDesignSetup foot_design_setup(const nlohmann::json& spec) {
@@ -380,7 +396,8 @@ JobKind foot_design_kind() {
   for (const std::string& f : walker_job_fields(true))
     if (f != "start") fields.push_back(f);
   fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "continuation"});
-  return typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job, run_design, design_cost);
+  return typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job, run_design, design_job_json,
+                                   design_cost);
 }
 
 }  // namespace cyclopt::service

@@ -72,7 +72,7 @@ nlohmann::json resolve(const FootFitJob& job) {
 
 JobKind foot_fit_kind() {
   // No estimate: a spec of at most 16 KiB holds ~1000 samples, fitted in seconds.
-  return typed_job_kind<FootFitJob>("foot_fit", {"walker"}, {"trials", "toe_bound"}, parse, run, {}, resolve);
+  return typed_job_kind<FootFitJob>("foot_fit", {"walker"}, {"trials", "toe_bound"}, parse, run, resolve);
 }
 
 }  // namespace cyclopt::service

@@ -2,6 +2,7 @@
 
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_report.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -109,11 +110,21 @@ void run(const FootSweep& s, JobContext& ctx) {
   }
 }
 
+// The resolved spec (resolved_spec.hpp): the foot as its full parameters (its density only when
+// given: without it every grid value gets the default), the grid as its values.
+nlohmann::json resolve(const FootSweep& s) {
+  return {{"foot", io::to_json(s.base)},
+          {"sweep", {{"parameter", s.parameter}, {"values", s.values}}},
+          {"samples", s.samples},
+          {"point_delay_ms", s.point_delay_ms}};
+}
+
 }  // namespace
 
 JobKind foot_sweep_kind() {
   // No estimate: at most 10000 cheap grid points.
-  return typed_job_kind<FootSweep>("foot_sweep", {"walker"}, {"foot", "sweep", "samples", "point_delay_ms"}, parse, run);
+  return typed_job_kind<FootSweep>("foot_sweep", {"walker"}, {"foot", "sweep", "samples", "point_delay_ms"}, parse, run,
+                                   resolve);
 }
 
 }  // namespace cyclopt::service

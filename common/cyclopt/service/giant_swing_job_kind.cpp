@@ -104,7 +104,7 @@ void run_giant_swing(const GiantSwingJob& job, JobContext& ctx) {
 JobKind giant_swing_kind() {
   // No estimate: the seed's tasks take about a minute whatever the options.
   return typed_job_kind<GiantSwingJob>("giant_swing", {"giant_swing"}, giant_swing_job_fields(), parse_giant_swing_job,
-                                       run_giant_swing);
+                                       run_giant_swing, giant_swing_job_json);
 }
 
 }  // namespace cyclopt::service

@@ -63,4 +63,24 @@ GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobF
   return job;
 }
 
+nlohmann::json giant_swing_job_json(const GiantSwingJob& job) {
+  const bool seed = job.method == GiantSwingMethod::seed;
+  const nlohmann::json task = io::to_json(job.task);
+  nlohmann::json options = nlohmann::json::object();
+  std::vector<std::string> keys = kCommonTaskKeys;
+  if (seed) keys.insert(keys.end(), kSeedOnlyKeys.begin(), kSeedOnlyKeys.end());
+  for (const std::string& key : keys)
+    if (task.contains(key)) options[key] = task[key];
+  nlohmann::json j = {{"motion", job.motion}, {"method", seed ? "seed" : "bezier"}};
+  if (!seed) {
+    const giant_swing::MinimumJerkProblemOptions& p = job.bezier.problem;
+    options["free_coefficients"] = p.free_coefficients;
+    options["steps"] = p.steps;
+    options["min_rate_fraction"] = p.min_rate_fraction;
+    j["solver"] = solver_json(job.bezier.solver);  // the seed method solves no NLP
+  }
+  j["options"] = options;
+  return j;
+}
+
 }  // namespace cyclopt::service

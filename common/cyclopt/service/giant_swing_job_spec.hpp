@@ -39,4 +39,10 @@ const std::vector<std::string>& giant_swing_job_fields();  // motion, method, op
 // invalid field.
 GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobFields& common);
 
+// The parsed job back in the spec's form with every default filled in (the kind's part of the
+// resolved spec, resolved_spec.hpp): motion, method, every option of the method (the task fields
+// as io/task_spec_json.hpp writes them) and, for bezier, the whole solver block. Parsing it again
+// gives the same job.
+nlohmann::json giant_swing_job_json(const GiantSwingJob& job);
+
 }  // namespace cyclopt::service

@@ -22,6 +22,10 @@
 //             common.solver.applied_to(nlp::seed_table_6_2_options())};
 //   }
 //
+//   nlohmann::json resolve_sweep(const SweepJob& job) {   // every default filled in
+//     return {{"speeds", job.speeds}, {"solver", solver_json(job.solver)}};
+//   }
+//
 //   void run_sweep(const SweepJob& job, JobContext& ctx) {
 //     ctx.announce(int(job.speeds.size()));
 //     ctx.add_curve(0, "speed sweep", "speed");
@@ -40,7 +44,7 @@
 //   }
 //
 //   service::JobKind walker_sweep_kind() {
-//     return typed_job_kind<SweepJob>("sweep", {"walker"}, {"speeds"}, parse_sweep, run_sweep);
+//     return typed_job_kind<SweepJob>("sweep", {"walker"}, {"speeds"}, parse_sweep, run_sweep, resolve_sweep);
 //   }
 //
 // and one line in builtin_job_kinds.cpp: registry.add(walker_sweep_kind());
@@ -48,6 +52,9 @@
 // Contract for parse(): throws SpecError naming the first invalid field and its admissible range;
 // everything else it throws is a server error. It is called once per submission, and once more
 // only where a job is run from its stored text (after a server restart, in cyclopt-worker).
+//
+// Contract for resolve(): parse() of what it returns (with the common fields) gives the same
+// spec, so that a stored resolved spec, submitted again, is the same job (resolved_spec.hpp).
 //
 // Contract for estimate(): kinds whose cost grows with their spec (grid size, starts, speeds)
 // provide it.
@@ -99,18 +106,18 @@ struct JobKind {
   // is queued (job_cost.hpp); empty: the kind's jobs are cheap (seconds, little memory).
   std::function<JobCost(const KindSpec& spec)> estimate;
   // The kind's fields of a parsed spec with every default filled in, in the spec's own form (so
-  // that submitting them again gives the same job), stored with the job (resolved_spec.hpp);
-  // empty: the kind does not resolve its fields and the stored resolved spec says so.
+  // that submitting them again gives the same job), stored with the job (resolved_spec.hpp).
+  // Every kind has one (JobKindRegistry::add checks).
   std::function<nlohmann::json(const KindSpec& spec)> resolve;
 };
 
-// A JobKind whose parse returns a Spec and whose run and estimate take it.
+// A JobKind whose parse returns a Spec and whose run, resolve and estimate take it.
 template <class Spec>
 JobKind typed_job_kind(std::string task, std::vector<std::string> scenes, std::vector<std::string> fields,
                        std::function<Spec(const nlohmann::json&, const CommonJobFields&)> parse,
                        std::function<void(const Spec&, JobContext&)> run,
-                       std::function<JobCost(const Spec&)> estimate = {},
-                       std::function<nlohmann::json(const Spec&)> resolve = {}) {
+                       std::function<nlohmann::json(const Spec&)> resolve,
+                       std::function<JobCost(const Spec&)> estimate = {}) {
   // The one cast: a kind is only ever given what its own parse returned.
   auto typed = [task](const KindSpec& s) -> const Spec& {
     const auto* t = dynamic_cast<const KindSpecOf<Spec>*>(&s);
@@ -122,8 +129,8 @@ JobKind typed_job_kind(std::string task, std::vector<std::string> scenes, std::v
     return std::shared_ptr<const KindSpec>(std::make_shared<const KindSpecOf<Spec>>(parse(spec, common)));
   };
   kind.run = [typed, run = std::move(run)](const KindSpec& s, JobContext& ctx) { run(typed(s), ctx); };
-  if (estimate) kind.estimate = [typed, estimate = std::move(estimate)](const KindSpec& s) { return estimate(typed(s)); };
   if (resolve) kind.resolve = [typed, resolve = std::move(resolve)](const KindSpec& s) { return resolve(typed(s)); };
+  if (estimate) kind.estimate = [typed, estimate = std::move(estimate)](const KindSpec& s) { return estimate(typed(s)); };
   return kind;
 }
 

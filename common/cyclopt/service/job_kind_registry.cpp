@@ -17,6 +17,7 @@ const char* to_string(StopReason r) {
 
 void JobKindRegistry::add(JobKind kind) {
   const std::string task = kind.task;
+  if (!kind.resolve) throw std::logic_error("job kind '" + task + "' has no resolve (job_kind.hpp)");
   if (!kinds_.emplace(task, std::move(kind)).second) throw std::logic_error("job kind '" + task + "' registered twice");
 }
 

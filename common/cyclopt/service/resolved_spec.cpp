@@ -19,20 +19,14 @@ void collect_seeds(const nlohmann::json& j, const std::string& path, nlohmann::j
 
 }  // namespace
 
-nlohmann::json resolved_spec(const ValidatedJobSpec& v, const nlohmann::json& submitted) {
+nlohmann::json resolved_spec(const ValidatedJobSpec& v) {
   nlohmann::json r = {{"scene", v.scene}, {"task", v.task}};
   if (!v.common.name.empty()) r["name"] = v.common.name;
   nlohmann::json limits = nlohmann::json::object();
   if (v.common.limits.max_wall_seconds) limits["max_wall_seconds"] = *v.common.limits.max_wall_seconds;
   if (v.common.limits.max_iterations) limits["max_iterations"] = *v.common.limits.max_iterations;
   if (!limits.empty()) r["limits"] = limits;
-  if (v.kind->resolve) {
-    r.update(v.kind->resolve(*v.spec));
-    return r;
-  }
-  for (const auto& [key, value] : submitted.items())
-    if (!r.contains(key)) r[key] = value;
-  r["resolved"] = false;  // this kind's defaults are not filled in
+  r.update(v.kind->resolve(*v.spec));
   return r;
 }
 

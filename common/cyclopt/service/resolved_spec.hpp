@@ -3,10 +3,13 @@
 // filled in, and the random seeds it uses.
 //
 //   resolved spec  {"scene", "task", "name", "limits" (as requested, before the server's caps)}
-//                  and the kind's own fields from JobKind::resolve, which the walker kinds fill
-//                  completely (walker_job_json.hpp): foot as full parameters, speeds, start x,
-//                  solver, multistart, continuation. A kind without resolve adds its fields as
-//                  submitted and "resolved": false.
+//                  and the kind's own fields from JobKind::resolve, complete for every kind: the
+//                  walker kinds (walker_job_json.hpp: foot as full parameters, speeds, start x,
+//                  solver, multistart, continuation), foot_sweep (foot, sweep values, samples),
+//                  foot_comparison (reference and feet as full parameters with their names),
+//                  foot_design (start foot, free parameters, bounds, densities, sweep fields),
+//                  foot_fit (trials, toe_bound), giant_swing (giant_swing_job_spec.hpp: every
+//                  option of the method, solver). Validated and resolved again, it is itself.
 //   seeds          every field named "seed" in the resolved spec, by path: {"multistart.seed": 1}
 //                  (a kind keeps its random seeds in fields of that name).
 
@@ -16,8 +19,7 @@
 
 namespace cyclopt::service {
 
-// `submitted`: the spec as submitted (validated into `v`).
-nlohmann::json resolved_spec(const ValidatedJobSpec& v, const nlohmann::json& submitted);
+nlohmann::json resolved_spec(const ValidatedJobSpec& v);
 
 nlohmann::json random_seeds(const nlohmann::json& resolved);
 

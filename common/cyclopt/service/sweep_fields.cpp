@@ -18,6 +18,12 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec) {
   return f;
 }
 
+nlohmann::json sweep_fields_json(const SweepFields& fields) {
+  return {{"seed_speeds", fields.seed_speeds},
+          {"min_trust_region", fields.min_trust_region},
+          {"corrector_max_iterations", fields.corrector_max_iterations}};
+}
+
 studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFields& fields, int starts) {
   studies::SpeedSweepOptions o;
   o.speeds = walker.speeds;

@@ -23,6 +23,8 @@ struct SweepFields {
 
 // Reads spec["continuation"] when present; throws SpecError naming the field.
 SweepFields parse_sweep_fields(const nlohmann::json& spec);
+// The "continuation" block with every field (for the resolved spec, resolved_spec.hpp).
+nlohmann::json sweep_fields_json(const SweepFields& fields);
 
 // The options of every sweep: the walker job's speeds, solver, seed and scale, `starts` runs per
 // seed speed.

@@ -188,11 +188,11 @@ JobKind continuation_kind(const std::string& task, void (*run)(const Continuatio
   std::vector<std::string> fields = walker_job_fields(true);
   fields.push_back("continuation");
   return typed_job_kind<ContinuationJob>(task, {"walker"}, fields, parse_continuation_job, run,
+                                         [task](const ContinuationJob& j) { return continuation_job_json(j, task == "sweep"); },
                                          [task](const ContinuationJob& j) {
                                            return walker_job_cost(j.walker, task, static_cast<int>(j.values.size()),
                                                                   static_cast<int>(j.seed_speeds.size()));
-                                         },
-                                         [task](const ContinuationJob& j) { return continuation_job_json(j, task == "sweep"); });
+                                         });
 }
 
 }  // namespace

@@ -24,11 +24,7 @@ nlohmann::json walker_job_json(const WalkerJob& job, bool sweep, bool random_sta
     j["design_bounds"] = db;
   }
   if (job.start) j["start"] = std::vector<double>(job.start->data(), job.start->data() + job.start->size());
-  j["solver"] = {{"solver", nlp::to_string(job.solver.solver)},
-                 {"max_iterations", job.solver.max_iterations},
-                 {"optimality_tolerance", job.solver.optimality_tolerance},
-                 {"constraint_tolerance", job.solver.constraint_tolerance},
-                 {"print_level", job.solver.print_level}};
+  j["solver"] = solver_json(job.solver);
   if (random_starts) j["multistart"] = {{"starts", job.starts}, {"seed", job.seed}, {"scale", job.scale}};
   return j;
 }

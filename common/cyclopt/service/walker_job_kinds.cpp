@@ -114,8 +114,8 @@ JobKind walker_kind(const std::string& task, void (*run)(const WalkerJob&, JobCo
   return typed_job_kind<WalkerJob>(
       task, {"walker"}, walker_job_fields(false),
       [](const nlohmann::json& spec, const CommonJobFields& common) { return parse_walker_job(spec, common, false); },
-      run, [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); },
-      [task](const WalkerJob& job) { return walker_job_json(job, false, task == "multistart"); });
+      run, [task](const WalkerJob& job) { return walker_job_json(job, false, task == "multistart"); },
+      [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); });
 }
 
 }  // namespace
