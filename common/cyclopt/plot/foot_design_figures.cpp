@@ -2,6 +2,7 @@
 
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/gait_stroboscope.hpp"
+#include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
 
 #include <algorithm>
@@ -16,13 +17,6 @@ namespace {
 std::string rho_text(double rho) {
   char b[48];
   std::snprintf(b, sizeof b, "rho %g kg/m^2", rho);
-  return b;
-}
-
-std::string percent(double saving) {
-  if (!std::isfinite(saving)) return "saving ?";
-  char b[48];
-  std::snprintf(b, sizeof b, "%.0f %%", 100.0 * saving);
   return b;
 }
 
@@ -85,6 +79,7 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
     if (r.admissible && (c.best < 0 || r.saving_vs_start > c.densities[static_cast<std::size_t>(c.best)].record.saving_vs_start))
       c.best = static_cast<int>(k);
   }
+  if (c.best >= 0) c.best_gaits = gait_points(doc, records::high_design_curve(c.best));
   return c;
 }
 
@@ -100,8 +95,8 @@ LineChart foot_design_cost_chart(const FootDesignCurves& c) {
   int colour = 0;
   for (const DesignedDensity& d : c.densities) {
     if (d.sweep.speed.empty()) continue;
-    chart.series.push_back({d.sweep.name + " (saving " + percent(d.record.saving_vs_start) + " vs start, " +
-                                percent(d.record.saving_vs_point) + " vs point feet)",
+    chart.series.push_back({d.sweep.name + " (saving " + report_number(100 * d.record.saving_vs_start, "%.0f %%") +
+                                " vs start, " + report_number(100 * d.record.saving_vs_point, "%.0f %%") + " vs point feet)",
                             d.sweep.speed, d.sweep.f_mech, true, false, palette(colour++)});
   }
   if (chart.series.empty()) throw std::invalid_argument("foot design: no sweep has a point to draw");
@@ -130,7 +125,10 @@ Scene foot_design_outlines_scene(const FootDesignCurves& c) {
 }
 
 std::vector<Figure> foot_design_figures(const nlohmann::json& document, std::vector<std::string>* not_drawn) {
-  const FootDesignCurves c = foot_design_curves(document);
+  return foot_design_figures(foot_design_curves(document), not_drawn);
+}
+
+std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<std::string>* not_drawn) {
   auto skip = [&](const std::string& why) {
     if (not_drawn) not_drawn->push_back(why);
   };
@@ -161,7 +159,7 @@ std::vector<Figure> foot_design_figures(const nlohmann::json& document, std::vec
   r.spec = c.spec;
   r.job = c.setup.walker;
   r.job.foot = best.design;
-  r.points = gait_points(document, records::high_design_curve(c.best));
+  r.points = c.best_gaits;
   const GaitPoint* p = point_near(r, c.setup.design_speed);
   if (!p) {
     skip("foot-design-gait: the " + best.sweep.name + "'s sweep has no converged gait with a trajectory");

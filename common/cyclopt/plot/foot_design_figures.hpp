@@ -38,6 +38,7 @@ struct FootDesignCurves {
   SweptCurve start_foot, point_feet;
   std::vector<DesignedDensity> densities;  // in the order of the spec's densities
   int best = -1;          // index into densities: the admissible design with the largest saving vs the start foot
+  std::vector<GaitPoint> best_gaits;  // the best design's fixed-foot sweep (when best >= 0)
   nlohmann::json spec;    // as stored (the resolved spec where the job has one)
   service::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
 };
@@ -50,6 +51,7 @@ LineChart foot_design_cost_chart(const FootDesignCurves& c);
 Scene foot_design_outlines_scene(const FootDesignCurves& c);
 
 // Every figure that can be drawn; with `not_drawn`, what was left out and why.
+std::vector<Figure> foot_design_figures(const FootDesignCurves& curves, std::vector<std::string>* not_drawn = nullptr);
 std::vector<Figure> foot_design_figures(const nlohmann::json& document, std::vector<std::string>* not_drawn = nullptr);
 
 }  // namespace cyclopt::plot
