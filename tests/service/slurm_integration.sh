@@ -3,7 +3,8 @@
 # that this script starts and stops, inside a private network namespace (unshare -n): slurmctld,
 # slurmd, munged, cycloptd, the clients and every cyclopt-worker see only this namespace's loopback.
 #   1. the same multistart, sweep and foot comparison through the local executor and through Slurm:
-#      same points; the comparison's feet run as one Slurm job each (work units);
+#      same points; the comparison's feet and the design's densities and references run as one
+#      Slurm job each (work units);
 #   2. scancel of a running unit, and kill -9 of a cyclopt-worker: the unit reruns, the job completes,
 #      no point lost or duplicated, integrity_check ok;
 #   3. kill -9 of cycloptd while a unit runs, restart: re-attached, never submitted twice;
@@ -24,7 +25,7 @@ if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
     }
   done
   unshare -n true 2>/dev/null || { echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"; exit 77; }
-  exec timeout -k 5 420 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
+  exec timeout -k 5 520 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
 fi
 
 CYCLOPTD=$1 CYCLOPT=$2 WORKER=$3 CLUSTER=$4
@@ -96,6 +97,7 @@ same_points() {  # same_points DB_A JOB_A DB_B JOB_B: equal keys and status, obj
 MULTISTART='{"scene": "walker", "task": "multistart", "foot": "point", "speed": 1.0, "objective": "f_mech", "multistart": {"starts": 4, "seed": 3, "scale": 0.05}}'
 SWEEP='{"scene": "walker", "task": "sweep", "foot": "point", "speeds": "0.8:0.2:1.2", "objective": "f_mech", "multistart": {"starts": 2, "seed": 1, "scale": 0.05}}'
 COMPARISON='{"scene": "walker", "task": "foot_comparison", "speeds": "1.0:0.1:1.1", "points": 50, "feet": ["P1-shoes-left-HM-SG"], "multistart": {"starts": 2, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}'
+DESIGN='{"scene": "walker", "task": "foot_design", "speeds": "2.2:0.1:2.3", "densities": [10], "design_speed": 2.3, "points": 50, "solver": {"max_iterations": 500}, "multistart": {"starts": 2, "seed": 2, "scale": 0.02}, "sweep_starts": 1, "continuation": {"seed_speeds": 2.3, "min_trust_region": 0.05, "corrector_max_iterations": 60}}'
 TINY='{"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "sweep": {"parameter": "density", "values": "10:10:30"}}'
 
 echo "== 1. local executor and Slurm store the same points"
@@ -104,12 +106,14 @@ read -r L_MS L_MS_T < <(run_job "$MULTISTART")
 read -r L_SW L_SW_T < <(run_job "$SWEEP")
 read -r L_TINY L_TINY_T < <(run_job "$TINY")
 read -r L_CMP L_CMP_T < <(run_job "$COMPARISON")
+read -r L_DES L_DES_T < <(run_job "$DESIGN")
 stop_server
 start_server slurm slurm
 read -r S_MS S_MS_T < <(run_job "$MULTISTART")
 read -r S_SW S_SW_T < <(run_job "$SWEEP")
 read -r S_TINY S_TINY_T < <(run_job "$TINY")
 read -r S_CMP S_CMP_T < <(run_job "$COMPARISON")
+read -r S_DES S_DES_T < <(run_job "$DESIGN")
 echo "multistart: $(same_points "$WORK/local.db" "$L_MS" "$WORK/slurm.db" "$S_MS")" || fail "multistart points differ"
 echo "sweep:      $(same_points "$WORK/local.db" "$L_SW" "$WORK/slurm.db" "$S_SW")" || fail "sweep points differ"
 same_points "$WORK/local.db" "$L_MS" "$WORK/slurm.db" "$S_MS" >/dev/null || fail "multistart points differ"
@@ -123,13 +127,18 @@ for d in "$WORK"/spool/cyclopt-"$S_CMP"-*-foot-*; do
 done
 [ "$CMP_UNITS" = 2 ] && [ "$CMP_SLURM" = 2 ] || fail "comparison: $CMP_UNITS unit spools, $CMP_SLURM Slurm jobs (2 feet: 2 expected)"
 echo "comparison: 2 feet -> 2 work units, one Slurm job each"
+echo "design:     $(same_points "$WORK/local.db" "$L_DES" "$WORK/slurm.db" "$S_DES")" || fail "design points differ"
+same_points "$WORK/local.db" "$L_DES" "$WORK/slurm.db" "$S_DES" >/dev/null || fail "design points differ"
+DES_UNITS=$(ls -d "$WORK"/spool/cyclopt-"$S_DES"-*-* 2>/dev/null | sed 's/.*-[0-9a-f]\{8\}-//' | sort | tr '\n' ' ')
+[ "$DES_UNITS" = "density-0 point-feet start-foot " ] || fail "design: units '$DES_UNITS' (density-0 point-feet start-foot expected)"
+echo "design: 1 density and 2 references -> units $DES_UNITS"
 
 echo "== 4. overhead"
-printf 'wall s      local    slurm\nmultistart  %6.2f  %6.2f\nsweep       %6.2f  %6.2f\n3-point job %6.2f  %6.2f\ncomparison  %6.2f  %6.2f  (2 feet: 2 units in parallel on Slurm, one after another locally)\n' \
-  "$L_MS_T" "$S_MS_T" "$L_SW_T" "$S_SW_T" "$L_TINY_T" "$S_TINY_T" "$L_CMP_T" "$S_CMP_T"
+printf 'wall s      local    slurm\nmultistart  %6.2f  %6.2f\nsweep       %6.2f  %6.2f\n3-point job %6.2f  %6.2f\ncomparison  %6.2f  %6.2f  (2 feet: 2 units in parallel on Slurm, one after another locally)\ndesign      %6.2f  %6.2f  (3 units: 2 references, 1 density)\n' \
+  "$L_MS_T" "$S_MS_T" "$L_SW_T" "$S_SW_T" "$L_TINY_T" "$S_TINY_T" "$L_CMP_T" "$S_CMP_T" "$L_DES_T" "$S_DES_T"
 # Submission-to-start latency per unit: unit.json's submitted_at (just before sbatch) to the
 # worker's started.json.
-for d in $(ls -d "$WORK"/spool/cyclopt-"$S_MS"-* "$WORK"/spool/cyclopt-"$S_SW"-* "$WORK"/spool/cyclopt-"$S_TINY"-* "$WORK"/spool/cyclopt-"$S_CMP"-*); do
+for d in $(ls -d "$WORK"/spool/cyclopt-"$S_MS"-* "$WORK"/spool/cyclopt-"$S_SW"-* "$WORK"/spool/cyclopt-"$S_TINY"-* "$WORK"/spool/cyclopt-"$S_CMP"-* "$WORK"/spool/cyclopt-"$S_DES"-*); do
   python3 -c 'import json,sys; d=sys.argv[1]; s=json.load(open(d+"/unit.json"))["submitted_at"]; t=json.load(open(d+"/started.json"))["started_at"]; print("unit %s: sbatch -> cyclopt-worker running %.3f s" % (d.rsplit("/",1)[1], t - s))' "$d"
 done
 

@@ -240,7 +240,8 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
 
 // Issue 15 item 3: an interrupted study resumes without recomputing stored work. The server is
 // stopped once the references are stored (in the design multistart); the second attempt replays
-// the reference sweeps and the finished design solves from the checkpoints: every checkpoint of
+// the reference sweeps (work units start-foot and point-feet, whose results are checkpoints too) and
+// the finished design solves from the checkpoints: every checkpoint of
 // the first attempt is unchanged (a solve done again records its own wall time), every point of
 // the first attempt keeps its solved_at, and the job ends as an uninterrupted one.
 TEST_F(FootDesignJobs, AnInterruptedDesignResumesWithoutSolvingAgain) {
@@ -277,7 +278,7 @@ TEST_F(FootDesignJobs, AnInterruptedDesignResumesWithoutSolvingAgain) {
   for (const auto& [key, value] : checkpoints) {
     ASSERT_TRUE(after.count(key)) << key;
     EXPECT_EQ(after.at(key), value) << key << " was solved again";
-    references += key.rfind("references/", 0) == 0;
+    references += key.rfind("unit/start-foot/", 0) == 0 || key.rfind("unit/point-feet/", 0) == 0;  // work units
   }
   EXPECT_GT(references, 0);
   EXPECT_GT(after.size(), checkpoints.size());  // the rest was solved in the second attempt

@@ -3,11 +3,13 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
+#include "cyclopt/service/foot_sweep_checkpoint.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/sweep_fields.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_json.hpp"
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <mutex>
 
 namespace cyclopt::service {
@@ -122,21 +125,44 @@ double mean_of_finite(const std::vector<double>& v) {
   return n > 0 ? sum / n : records::kUnset;
 }
 
-class DesignRun {
+// The study's work units (issue 18): "start-foot" and "point-feet", the reference sweeps (when
+// the job has references), then "density-<k>" per density (design multistart, free-foot
+// continuation, two fixed-foot sweeps). Each stores its curves' points as it finds them and, at
+// its end, its result as the unit's checkpoint kUnitResult: a reference its sweep summary, a
+// density its DesignedFootRecord (savings not yet known) and its two fixed-foot sweeps. The job
+// then adds the savings against the references and stores each density's record (curve 0).
+constexpr const char* kUnitResult = "result";
+constexpr int kFirstDensityUnit = 2;
+constexpr studies::DesignReference kReferences[] = {studies::DesignReference::start_foot,
+                                                    studies::DesignReference::point_feet};
+constexpr const char* kReferenceUnits[] = {"start-foot", "point-feet"};
+
+std::vector<WorkUnit> design_units(const DesignJob& job) {
+  std::vector<WorkUnit> units;
+  if (job.references)
+    for (int i = 0; i < kFirstDensityUnit; ++i) units.push_back({kReferenceUnits[i], i});
+  for (std::size_t k = 0; k < job.densities.size(); ++k)
+    units.push_back({"density-" + std::to_string(k), kFirstDensityUnit + static_cast<int>(k)});
+  return units;
+}
+
+int total_points(const DesignJob& job) {
+  const int n = static_cast<int>(job.densities.size());
+  const int speeds = static_cast<int>(job.walker.speeds.size());
+  return n + (job.references ? 2 * speeds : 0) + 2 * n * speeds;
+}
+
+// One work unit of the study, computed against its unit's context.
+class DesignUnit {
  public:
-  DesignRun(const DesignJob& job, JobContext& ctx) : job_(job), ctx_(ctx) {
+  DesignUnit(const DesignJob& job, JobContext& ctx) : job_(job), ctx_(ctx) {
     base_ = job.walker.problem;  // the fixed-foot problem of the references and step 3
     base_.free_parameters.clear();
     base_.design_bounds.reset();
   }
-  void run();
+  void run(const WorkUnit& unit);
 
  private:
-  int speeds() const { return static_cast<int>(job_.walker.speeds.size()); }
-  int total() const {
-    const int n = static_cast<int>(job_.densities.size());
-    return n + (job_.references ? 2 * speeds() : 0) + 2 * n * speeds();
-  }
   bool running() { return ctx_.stop_reason() == StopReason::none; }
   void store(const storage::SolutionPoint& p) {
     if (ctx_.store_point(p)) ++stored_;  // a resumed job's replayed phases find their points stored
@@ -144,13 +170,11 @@ class DesignRun {
   void store_sweep(int curve, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
     for (const storage::SolutionPoint& p : best_points(studies::walker_family(model, base_, "speed"), s, curve)) store(p);
   }
-  int index_of(double density) const {
-    return static_cast<int>(std::find(job_.densities.begin(), job_.densities.end(), density) - job_.densities.begin());
-  }
+  studies::FootDesignOptions options(PhaseProgress& progress);
   void store_multistart(int k, const studies::DensityDesign& d);
   void store_free_foot(int k, const studies::DensityDesign& d);
-  void store_design(int k, const studies::DensityDesign& d);
-  bool on_density(const studies::DensityDesign& d, studies::DesignPhase phase);
+  records::DesignedFootRecord design_record(const studies::DensityDesign& d) const;
+  bool on_density(int k, const studies::DensityDesign& d, studies::DesignPhase phase);
   std::string step() {
     const std::lock_guard lock(mutex_);
     return step_;
@@ -164,7 +188,7 @@ class DesignRun {
   std::string step_;
 };
 
-void DesignRun::store_multistart(int k, const studies::DensityDesign& d) {
+void DesignUnit::store_multistart(int k, const studies::DensityDesign& d) {
   const walker::GaitProblem shape(d.model, d.problem);
   for (std::size_t i = 0; i < d.optima.size(); ++i) {
     const studies::DesignOptimum& m = d.optima[i];
@@ -188,7 +212,7 @@ void DesignRun::store_multistart(int k, const studies::DensityDesign& d) {
   }
 }
 
-void DesignRun::store_free_foot(int k, const studies::DensityDesign& d) {
+void DesignUnit::store_free_foot(int k, const studies::DensityDesign& d) {
   const continuation::ParametricProblem family = studies::walker_family(d.model, d.problem, "speed");
   for (std::size_t i = 0; i < d.free_foot.points.size(); ++i) {
     const continuation::CurvePoint& c = d.free_foot.points[i];
@@ -204,7 +228,7 @@ void DesignRun::store_free_foot(int k, const studies::DensityDesign& d) {
   }
 }
 
-void DesignRun::store_design(int k, const studies::DensityDesign& d) {
+records::DesignedFootRecord DesignUnit::design_record(const studies::DensityDesign& d) const {
   records::DesignedFootRecord r;
   r.density = d.density;
   r.starts = job_.walker.starts;
@@ -214,56 +238,42 @@ void DesignRun::store_design(int k, const studies::DensityDesign& d) {
   r.wheel_optima = d.class_counts[static_cast<int>(studies::DesignClass::wheel)];
   r.no_rolling_optima = d.class_counts[static_cast<int>(studies::DesignClass::no_rolling)];
   r.best = d.best;
-  r.speeds = speeds();
+  r.speeds = static_cast<int>(job_.walker.speeds.size());
   r.multistart_seconds = d.multistart_seconds;
   r.continuation_seconds = d.continuation_seconds;
   r.sweep_seconds = d.sweep_seconds;
   r.seconds = d.seconds;
-  storage::SolutionPoint p;
-  p.key = {records::kDesignCurve, k};
-  p.parameter = d.density;
   if (d.best < 0) {
-    p.status = "no admissible design";
     r.reason = d.kkt_starts == 0
                    ? "no design multistart run reached a KKT point (" + std::to_string(r.starts) + " starts)"
                    : "every optimum of the design multistart is degenerate: " + std::to_string(r.stilt_optima) +
                          " stilt, " + std::to_string(r.wheel_optima) + " wheel, " + std::to_string(r.no_rolling_optima) +
                          " no rolling (design_class.hpp; " + std::to_string(r.kkt_starts) + " of " +
                          std::to_string(r.starts) + " starts reached a KKT point)";
-  } else {
-    const studies::DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];
-    r.admissible = true;
-    r.design_objective = best.objective;
-    p.objective = best.objective;
-    r.design = designed_foot(walker::GaitProblem(d.model, d.problem).model_at(best.z));
-    r.active_bounds = best.active_bounds;
-    r.free_foot_speeds = static_cast<int>(std::count_if(d.free_foot_f_mech.begin(), d.free_foot_f_mech.end(),
-                                                        [](double f) { return std::isfinite(f); }));
-    r.low_speed = d.low_speed;
-    r.low_speed_design = designed_foot(walker::make_walker_model(d.low_speed_foot, job_.walker.constants));
-    r.speeds_reached = d.high.speeds_found;
-    r.mean_f_mech = mean_of_finite(d.high.f_mech);
-    r.saving_vs_start = d.saving_vs_start;
-    r.saving_vs_point = d.saving_vs_point;
-    r.low_speeds_reached = d.low.speeds_found;
-    r.low_mean_f_mech = mean_of_finite(d.low.f_mech);
-    r.low_saving_vs_start = d.low_saving_vs_start;
-    r.low_saving_vs_point = d.low_saving_vs_point;
+    return r;
   }
-  p.values = r;
-  store(p);
+  const studies::DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];
+  r.admissible = true;
+  r.design_objective = best.objective;
+  r.design = designed_foot(walker::GaitProblem(d.model, d.problem).model_at(best.z));
+  r.active_bounds = best.active_bounds;
+  r.free_foot_speeds = static_cast<int>(std::count_if(d.free_foot_f_mech.begin(), d.free_foot_f_mech.end(),
+                                                      [](double f) { return std::isfinite(f); }));
+  r.low_speed = d.low_speed;
+  r.low_speed_design = designed_foot(walker::make_walker_model(d.low_speed_foot, job_.walker.constants));
+  r.speeds_reached = d.high.speeds_found;
+  r.mean_f_mech = mean_of_finite(d.high.f_mech);
+  r.low_speeds_reached = d.low.speeds_found;
+  r.low_mean_f_mech = mean_of_finite(d.low.f_mech);
+  return r;
 }
 
 // Stores what a phase found (unless the job was stopped in it: then its result may be partial,
 // and the resumed job replays the phase from its checkpoints).
-bool DesignRun::on_density(const studies::DensityDesign& d, studies::DesignPhase phase) {
+bool DesignUnit::on_density(int k, const studies::DensityDesign& d, studies::DesignPhase phase) {
   if (!running()) return false;
-  const int k = index_of(d.density);
   switch (phase) {
-    case studies::DesignPhase::multistart:
-      store_multistart(k, d);
-      if (d.best < 0) store_design(k, d);
-      break;
+    case studies::DesignPhase::multistart: store_multistart(k, d); break;
     case studies::DesignPhase::free_foot: store_free_foot(k, d); break;
     case studies::DesignPhase::high_sweep:
       store_sweep(records::high_design_curve(k),
@@ -271,29 +281,12 @@ bool DesignRun::on_density(const studies::DensityDesign& d, studies::DesignPhase
       break;
     case studies::DesignPhase::low_sweep:
       store_sweep(records::low_design_curve(k), walker::make_walker_model(d.low_speed_foot, job_.walker.constants), d.low);
-      store_design(k, d);
       break;
   }
   return running();
 }
 
-void DesignRun::run() {
-  ctx_.announce(total());
-  ctx_.add_curve(records::kDesignCurve, "designed foot per density", "density");
-  if (job_.references) {
-    ctx_.add_curve(records::kStartFootCurve, "start foot " + job_.start_foot.name + " (own masses)", "speed");
-    ctx_.add_curve(records::kPointFeetCurve, "point feet", "speed");
-  }
-  for (std::size_t k = 0; k < job_.densities.size(); ++k) {
-    const int i = static_cast<int>(k);
-    const std::string rho = "rho " + number_text(job_.densities[k]) + ": ";
-    ctx_.add_curve(records::design_multistart_curve(i), rho + "design multistart optima, best first", "rank");
-    ctx_.add_curve(records::free_foot_curve(i), rho + "free-foot continuation", "speed");
-    ctx_.add_curve(records::high_design_curve(i), rho + "fixed-foot sweep of the design", "speed");
-    ctx_.add_curve(records::low_design_curve(i), rho + "fixed-foot sweep of the low-speed design", "speed");
-  }
-  stored_ = static_cast<int>(ctx_.already_stored_points().size());
-
+studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   studies::FootDesignOptions o;
   o.densities = job_.densities;
   o.design_speed = job_.design_speed;
@@ -307,41 +300,127 @@ void DesignRun::run() {
   o.sweep = sweep_options(job_.walker, job_.sweeps, job_.sweep_starts);
   o.journal = [this](const std::string& part) { return sweep_journal(ctx_, part + "/"); };
   // Progress: the step (density and phase) as the message, the sweep's or multistart's phase.
-  PhaseProgress progress(ctx_, {.points_done = stored_, .points_total = total()});
   o.sweep.continuation.corrector.on_iteration = progress.iterations();
   o.sweep.continuation.corrector.should_stop = stop_predicate(ctx_);
-  o.on_step = [&](const std::string& s) {
+  o.on_step = [this, &progress](const std::string& s) {
     {
       const std::lock_guard lock(mutex_);
       step_ = s;
     }
-    progress.set({.points_done = stored_, .points_total = total(), .message = s});
+    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s});
     return running();
   };
-  o.sweep.on_progress = [&](const studies::SweepProgress& sp) {
+  o.sweep.on_progress = [this, &progress](const studies::SweepProgress& sp) {
     ProgressReport r = sweep_progress_report(sp, step());
     r.points_done = stored_;
-    r.points_total = total();
+    r.points_total = total_points(job_);
     progress.set(r);
   };
-  o.on_multistart_progress = [&](double, int done, double best) {
-    progress.set({.points_done = stored_, .points_total = total(), .message = step(), .phase = "design multistart",
+  o.on_multistart_progress = [this, &progress](double, int done, double best) {
+    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = step(), .phase = "design multistart",
                   .phase_done = done, .phase_total = job_.walker.starts, .best_objective = best});
   };
-  o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
-    if (!running()) return false;
-    store_sweep(part == "references/start foot" ? records::kStartFootCurve : records::kPointFeetCurve, model, s);
-    return running();
-  };
-  o.on_density = [&](const studies::DensityDesign& d, studies::DesignPhase phase) { return on_density(d, phase); };
+  return o;
+}
+
+void DesignUnit::run(const WorkUnit& unit) {
+  if (ctx_.stored_checkpoints().count(kUnitResult)) return;  // done by an earlier attempt
+  stored_ = static_cast<int>(ctx_.already_stored_points().size());
+  PhaseProgress progress(ctx_, {.points_done = stored_, .points_total = total_points(job_)});
+  studies::FootDesignOptions o = options(progress);
   try {
-    studies::design_feet(job_.start_foot, base_, o);
-  } catch (const std::invalid_argument& e) {  // parse_design_job checks what design_feet refuses
+    if (unit.index < kFirstDensityUnit) {
+      const studies::DesignReference which = kReferences[unit.index];
+      const std::string part = studies::reference_part(which);
+      if (!o.on_step(part)) return;
+      const studies::FootSweepSummary s = studies::sweep_reference(which, job_.start_foot, base_, o);
+      if (!running()) return;
+      store_sweep(which == studies::DesignReference::start_foot ? records::kStartFootCurve : records::kPointFeetCurve,
+                  studies::reference_model(which, job_.start_foot, job_.walker.constants), s);
+      ctx_.store_checkpoint(kUnitResult, foot_sweep_to_json(s).dump());
+      return;
+    }
+    const int k = unit.index - kFirstDensityUnit;
+    if (k >= static_cast<int>(job_.densities.size()))
+      throw std::logic_error("foot_design: no density " + std::to_string(k) + " in the job");
+    o.on_density = [this, k](const studies::DensityDesign& d, studies::DesignPhase phase) { return on_density(k, d, phase); };
+    const studies::DensityDesign d =
+        studies::design_density(job_.densities[static_cast<std::size_t>(k)], job_.start_foot, base_, o);
+    if (d.stopped || !running()) return;
+    ctx_.store_checkpoint(kUnitResult, nlohmann::json{{"record", nlohmann::json(design_record(d))},
+                                                      {"high", foot_sweep_to_json(d.high)},
+                                                      {"low", foot_sweep_to_json(d.low)}}
+                                           .dump());
+  } catch (const std::invalid_argument& e) {  // parse_design_job checks what the study refuses
     throw std::logic_error(std::string("foot_design: options the spec check let through: ") + e.what());
   }
 }
 
-void run_design(const DesignJob& job, JobContext& ctx) { DesignRun(job, ctx).run(); }
+// A unit's result checkpoint, parsed (std::runtime_error naming the unit if missing or unreadable).
+nlohmann::json unit_result(const std::map<std::string, std::string>& stored, const WorkUnit& unit) {
+  const auto it = stored.find(unit_checkpoint_prefix(unit.id) + kUnitResult);
+  if (it == stored.end()) throw std::runtime_error("work unit " + unit.id + " ended without its result");
+  try {
+    return nlohmann::json::parse(it->second);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("work unit " + unit.id + ": unreadable result (" + e.what() + ")");
+  }
+}
+
+void run_design(const DesignJob& job, JobContext& ctx) {
+  ctx.announce(total_points(job));
+  ctx.add_curve(records::kDesignCurve, "designed foot per density", "density");
+  if (job.references) {
+    ctx.add_curve(records::kStartFootCurve, "start foot " + job.start_foot.name + " (own masses)", "speed");
+    ctx.add_curve(records::kPointFeetCurve, "point feet", "speed");
+  }
+  for (std::size_t k = 0; k < job.densities.size(); ++k) {
+    const int i = static_cast<int>(k);
+    const std::string rho = "rho " + number_text(job.densities[k]) + ": ";
+    ctx.add_curve(records::design_multistart_curve(i), rho + "design multistart optima, best first", "rank");
+    ctx.add_curve(records::free_foot_curve(i), rho + "free-foot continuation", "speed");
+    ctx.add_curve(records::high_design_curve(i), rho + "fixed-foot sweep of the design", "speed");
+    ctx.add_curve(records::low_design_curve(i), rho + "fixed-foot sweep of the low-speed design", "speed");
+  }
+  const std::vector<WorkUnit> units = design_units(job);
+  ctx.run_units(units, [&job](const WorkUnit& unit, JobContext& c) { DesignUnit(job, c).run(unit); });
+  if (ctx.stop_reason() != StopReason::none) return;
+  const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
+  studies::FootSweepSummary references[2];
+  for (const WorkUnit& unit : units) {
+    try {
+      const nlohmann::json result = unit_result(stored, unit);
+      if (unit.index < kFirstDensityUnit) {
+        references[unit.index] = foot_sweep_from_json(result);
+        continue;
+      }
+      studies::DensityDesign d;
+      d.high = foot_sweep_from_json(result.at("high"));
+      d.low = foot_sweep_from_json(result.at("low"));
+      records::DesignedFootRecord r = result.at("record").get<records::DesignedFootRecord>();
+      if (r.admissible) {
+        studies::add_savings(d, job.walker.speeds, references[0], references[1]);
+        r.saving_vs_start = d.saving_vs_start;
+        r.saving_vs_point = d.saving_vs_point;
+        r.low_saving_vs_start = d.low_saving_vs_start;
+        r.low_saving_vs_point = d.low_saving_vs_point;
+      }
+      storage::SolutionPoint p;
+      p.key = {records::kDesignCurve, unit.index - kFirstDensityUnit};
+      p.parameter = r.density;
+      if (r.admissible)
+        p.objective = r.design_objective;
+      else
+        p.status = "no admissible design";
+      p.values = r;
+      ctx.store_point(p);
+    } catch (const std::runtime_error&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw std::runtime_error("work unit " + unit.id + ": unreadable result (" + e.what() + ")");
+    }
+  }
+}
 
 // Per density a design multistart (foot free: the rolling-foot cost with more variables), a
 // continuation over the speeds below the design speed and two sweeps; the two reference sweeps.
@@ -396,8 +475,11 @@ JobKind foot_design_kind() {
   for (const std::string& f : walker_job_fields(true))
     if (f != "start") fields.push_back(f);
   fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "continuation"});
-  return typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job, run_design, design_job_json,
-                                   design_cost);
+  return with_work_units<DesignJob>(typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job,
+                                                              run_design, design_job_json, design_cost),
+                                    [](const DesignJob& job, const WorkUnit& unit, JobContext& ctx) {
+                                      DesignUnit(job, ctx).run(unit);
+                                    });
 }
 
 }  // namespace cyclopt::service

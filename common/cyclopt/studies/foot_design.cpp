@@ -55,7 +55,7 @@ class DesignStudy {
               std::vector<std::string> free)
       : start_(start), problem_(problem), o_(o), free_(std::move(free)) {}
 
-  DensityDesign at(double rho, const FootDesignResult& references);
+  DensityDesign at(double rho);
 
  private:
   bool step(const std::string& text) const { return !o_.on_step || o_.on_step(text); }
@@ -107,7 +107,7 @@ DesignOptimum DesignStudy::optimum(const walker::GaitProblem& shape, double rho,
   return d;
 }
 
-DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
+DensityDesign DesignStudy::at(double rho) {
   const Clock::time_point t0 = Clock::now();
   DensityDesign d;
   d.density = rho;
@@ -223,16 +223,12 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   // design reached f_mech 0.0413 at 2.3 m/s where the design has 0.0344.
   d.high = sweep_foot(name + " design", model_of(best.foot), problem_,
                       journaled(o_, name + "/high", {{o_.design_speed, best.z.head(gait_count)}}));
-  d.saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.high);
-  d.saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.high);
   d.sweep_seconds = seconds_since(t2);
   if (!finished(d, DesignPhase::high_sweep)) return d.stopped = true, d;
   if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
   d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_,
                      journaled(o_, name + "/low", {{d.low_speed, low_speed_gait}}));
   d.sweep_seconds = seconds_since(t2);
-  d.low_saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.low);
-  d.low_saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.low);
   d.seconds = seconds_since(t0);
   if (!finished(d, DesignPhase::low_sweep)) d.stopped = true;
   return d;
@@ -240,8 +236,7 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
 
 }  // namespace
 
-FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                             const FootDesignOptions& o) {
+std::vector<std::string> design_free_parameters(const foot::FootSpec& start, const FootDesignOptions& o) {
   if (start.model == foot::FootModel::point) throw std::invalid_argument("foot: the start foot must be HM or HMT");
   if (o.densities.empty()) throw std::invalid_argument("densities: need at least one density");
   for (double rho : o.densities)
@@ -263,27 +258,62 @@ FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProb
   if (!violated.empty())
     throw std::invalid_argument("design_bounds: the start foot violates " + violated.front() +
                                 " in a parameter that is not free");
+  return free;
+}
 
+const char* reference_part(DesignReference which) {
+  return which == DesignReference::start_foot ? "references/start foot" : "references/point feet";
+}
+
+walker::WalkerModel<double> reference_model(DesignReference which, const foot::FootSpec& start,
+                                            const walker::WalkingConstants& constants) {
+  if (which == DesignReference::point_feet) return walker::make_walker_model(foot::foot_preset("point").spec, constants);
+  foot::FootSpec own_masses = start;
+  own_masses.density.reset();
+  return walker::make_walker_model(own_masses, constants);
+}
+
+FootSweepSummary sweep_reference(DesignReference which, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                                 const FootDesignOptions& o) {
+  const std::string name = which == DesignReference::start_foot ? "start foot " + start.name : "point feet";
+  return sweep_foot(name, reference_model(which, start, o.constants), problem, journaled(o, reference_part(which)));
+}
+
+DensityDesign design_density(double rho, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                             const FootDesignOptions& o) {
+  return DesignStudy(start, problem, o, design_free_parameters(start, o)).at(rho);
+}
+
+void add_savings(DensityDesign& d, const std::vector<double>& speeds, const FootSweepSummary& start_foot,
+                 const FootSweepSummary& point_feet) {
+  d.saving_vs_start = saving(speeds, start_foot, d.high);
+  d.saving_vs_point = saving(speeds, point_feet, d.high);
+  d.low_saving_vs_start = saving(speeds, start_foot, d.low);
+  d.low_saving_vs_point = saving(speeds, point_feet, d.low);
+}
+
+FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                             const FootDesignOptions& o) {
+  const std::vector<std::string> free = design_free_parameters(start, o);
   const Clock::time_point t0 = Clock::now();
   FootDesignResult result;
   result.speeds = o.sweep.speeds;
   if (o.references) {
     if (o.on_step && !o.on_step("references: start foot and point feet")) return result;
-    foot::FootSpec own_masses = start;
-    own_masses.density.reset();
-    const walker::WalkerModel<double> own = walker::make_walker_model(own_masses, o.constants);
-    result.start_foot = sweep_foot("start foot " + start.name, own, problem, journaled(o, "references/start foot"));
-    if (o.on_reference && !o.on_reference("references/start foot", own, result.start_foot)) return result;
-    const walker::WalkerModel<double> point = walker::make_walker_model(foot::foot_preset("point").spec, o.constants);
-    result.point_feet = sweep_foot("point feet", point, problem, journaled(o, "references/point feet"));
-    if (o.on_reference && !o.on_reference("references/point feet", point, result.point_feet)) return result;
+    for (DesignReference which : {DesignReference::start_foot, DesignReference::point_feet}) {
+      FootSweepSummary& s = which == DesignReference::start_foot ? result.start_foot : result.point_feet;
+      s = sweep_reference(which, start, problem, o);
+      if (o.on_reference && !o.on_reference(reference_part(which), reference_model(which, start, o.constants), s))
+        return result;
+    }
     result.reference_seconds = seconds_since(t0);
   }
   DesignStudy study(start, problem, o, free);
   for (double rho : o.densities) {
-    result.designs.push_back(study.at(rho, result));
-    const DensityDesign& d = result.designs.back();
+    result.designs.push_back(study.at(rho));
+    DensityDesign& d = result.designs.back();
     if (d.stopped) break;
+    add_savings(d, o.sweep.speeds, result.start_foot, result.point_feet);
     const int k = static_cast<int>(result.designs.size()) - 1;
     if (std::isfinite(d.saving_vs_start) &&
         (result.best_design < 0 || d.saving_vs_start > result.designs[static_cast<std::size_t>(result.best_design)].saving_vs_start))

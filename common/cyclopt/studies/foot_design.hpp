@@ -118,4 +118,21 @@ struct FootDesignResult {
 FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
                              const FootDesignOptions& options);
 
+// design_feet's independent pieces, for a caller that runs them apart (foot_design_kind.hpp: one
+// work unit each). They throw as design_feet does.
+enum class DesignReference { start_foot, point_feet };
+const char* reference_part(DesignReference which);  // its journal's name (above)
+// The reference's walker: the start foot with its own masses, or point feet.
+walker::WalkerModel<double> reference_model(DesignReference which, const foot::FootSpec& start,
+                                            const walker::WalkingConstants& constants);
+FootSweepSummary sweep_reference(DesignReference which, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                                 const FootDesignOptions& options);
+// Steps 1-3 for one density (of options.densities or not); the savings are left NaN.
+DensityDesign design_density(double rho, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
+                             const FootDesignOptions& options);
+// The savings of the density's fixed-foot sweeps against the two references (NaN where a
+// reference was not swept).
+void add_savings(DensityDesign& design, const std::vector<double>& speeds, const FootSweepSummary& start_foot,
+                 const FootSweepSummary& point_feet);
+
 }  // namespace cyclopt::studies
