@@ -75,13 +75,13 @@ ReportTable sensitivity_comparison_table(const std::vector<SensitivityParameter>
     // The continuation's Delta f at the range, or at the furthest value it reached (marked).
     auto reached = [&](double delta, double at, double want) {
       if (!std::isfinite(delta)) return std::string("-");
-      std::string v = report_number(delta, "%+.3e");
+      std::string v = report_number(delta, "%+.4g");
       if (std::abs(at - want) > 1e-9) v += " (at " + report_number(100.0 * at, "%+.3g") + " %)";
       return v;
     };
-    t.rows.push_back({s.parameter, report_number(s.value, "%.4g"), report_number(s.derivative, "%+.4e"),
-                      report_number(s.relative, "%+.4f"), report_number(s.predicted_decrease, "%+.3e"),
-                      report_number(s.predicted_increase, "%+.3e"),
+    t.rows.push_back({s.parameter, report_number(s.value, "%.4g"), report_number(s.derivative, "%+.4g"),
+                      report_number(s.relative, "%+.4f"), report_number(s.predicted_decrease, "%+.4g"),
+                      report_number(s.predicted_increase, "%+.4g"),
                       reached(s.continuation_decrease, s.reached_decrease, -s.relative_range),
                       reached(s.continuation_increase, s.reached_increase, s.relative_range), s.verdict});
   }
@@ -93,7 +93,7 @@ ReportTable kkt_sensitivity_table(const records::KktSensitivitiesRecord& k) {
   t.header = {"parameter", "value", "df/dp", "relative p/f df/dp", "kink", "active set changes at (decrease)",
               "active set changes at (increase)"};
   for (const records::ParameterSensitivityRecord& p : k.parameters)
-    t.rows.push_back({p.name, report_number(p.value, "%.4g"), report_number(p.derivative, "%+.4e"), report_number(p.relative, "%+.4f"),
+    t.rows.push_back({p.name, report_number(p.value, "%.4g"), report_number(p.derivative, "%+.4g"), report_number(p.relative, "%+.4f"),
                       p.kink ? "yes" : "no", change_text(p.decrease, -1.0), change_text(p.increase, 1.0)});
   return t;
 }
@@ -102,12 +102,15 @@ std::string kkt_sensitivity_text(const records::KktSensitivitiesRecord& k) {
   if (k.unavailable) return "No KKT sensitivities: " + *k.unavailable + ".";
   return "Derivatives of the optimal objective f* = " + report_number(k.objective, "%.6f") +
          " with respect to each model parameter from the Lagrangian at the KKT point (envelope theorem, no re-solve; "
-         "studies/kkt_sensitivity.hpp). Relative: the % change of f* per % change of p. Kink: the active set changes at p "
-         "itself, so f* is not twice differentiable there; otherwise the linear prediction holds until the active set "
-         "changes at the relative change given on each side. Multipliers: " + k.multipliers + ", |grad_z L| = " +
+         "studies/kkt_sensitivity.hpp). Relative: the % change of f* per % change of p. The last two columns: the change "
+         "of p at which the linearised optimum first changes its active set on that side (a constraint becomes active, "
+         "or an active one's multiplier reaches 0); up to there df/dp predicts Delta f linearly. Kink 'yes': that change "
+         "lies within 1e-4 % of p, so f* bends at p itself (its derivative is still df/dp, but a difference quotient "
+         "over a step is off by O(step)). Multipliers: " + k.multipliers + ", |grad_z L| = " +
          report_number(k.lagrangian_gradient, "%.1e") + ", " + std::to_string(k.active_constraints) + " active constraints" +
-         (k.unique_multipliers ? "" : " with dependent gradients (the multipliers are one set of several)") + ", " +
-         std::to_string(k.weakly_active.size()) + " weakly active.";
+         (k.unique_multipliers ? "" : " with dependent gradients (the multipliers are one set of several)") +
+         (k.weakly_active.empty() ? "" : ", " + std::to_string(k.weakly_active.size()) + " weakly active (active with multiplier ~0)") +
+         ".";
 }
 
 }  // namespace cyclopt::plot

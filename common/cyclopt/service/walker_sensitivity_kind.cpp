@@ -160,7 +160,7 @@ SensitivitySummaryRecord compare(const ParameterSensitivityRecord* k, double obj
     std::string rows;
     for (std::size_t i = 0; i < k->weakly_active.size() && i < 3; ++i) rows += (i ? ", " : "") + k->weakly_active[i];
     if (k->weakly_active.size() > 3) rows += " and " + std::to_string(k->weakly_active.size() - 3) + " more";
-    reasons.push_back("the active set changes at p itself (weakly active: " + rows + ")");
+    reasons.push_back("the active set changes at p itself (" + (rows.empty() ? std::string("a multiplier is ~0") : rows) + ")");
   }
   for (const auto& [side, change] : {std::pair{-1.0, k->decrease}, std::pair{1.0, k->increase}})
     if (!k->kink && change.relative_change < range)
@@ -179,7 +179,7 @@ SensitivitySummaryRecord compare(const ParameterSensitivityRecord* k, double obj
     s.verdict = "agrees";
   } else {
     s.verdict = "kink: " + join(reasons, "; ");
-    if (bracketed) s.verdict += " (at " + percent(h) + " the difference quotients still bracket the KKT derivative)";
+    if (bracketed) s.verdict += "; the difference quotients at +-" + percent(h).substr(1) + " still bracket the KKT derivative";
   }
   return s;
 }
