@@ -1,6 +1,7 @@
 // cyclopt-worker: computes one work unit that cycloptd handed out through a spool directory
 // (remote/unit_spool.hpp), e.g. as a Slurm batch job. It runs the unit's job kind exactly as a
-// server worker thread would and leaves every point, curve and progress report in the spool.
+// server worker thread would (the whole job, or the one work unit of it the unit names:
+// JobKind::run_unit) and leaves every point, curve and progress report in the spool.
 //
 //   cyclopt-worker --unit DIR
 //
@@ -52,7 +53,14 @@ int main(int argc, char** argv) {
       }
       if (spec.task != unit.task)
         throw std::runtime_error("unit.json: task '" + unit.task + "' but its spec's task is '" + spec.task + "'");
-      spec.run(ctx);
+      if (!unit.unit) {
+        spec.run(ctx);
+      } else if (!spec.kind->run_unit) {
+        throw std::runtime_error("unit.json: work unit '" + unit.unit->id + "' of task '" + spec.task +
+                                 "', which does not split into units");
+      } else {
+        spec.kind->run_unit(*spec.spec, *unit.unit, ctx);
+      }
     } catch (const std::exception& e) {
       outcome.error = e.what();
     }

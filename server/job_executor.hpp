@@ -6,8 +6,12 @@
 // Each gets the job's spec parsed once (the worker pool's); the Slurm executor hands the stored
 // text to cyclopt-worker, which parses it in its own process.
 // Contract as JobKind::run: return normally when done or stopped, throw when the job failed.
+// A job whose kind splits into work units (JobKind::run_unit) hands them back through its context
+// (WorkerJobContext::run_units) to run_units: the local executor computes them on the job's
+// thread one after another, the Slurm executor submits each as a batch job and waits for all.
 
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
 #include "cyclopt/storage/job_record.hpp"
 
 namespace cyclopt::server {
@@ -17,6 +21,10 @@ class JobExecutor {
   virtual ~JobExecutor() = default;
   virtual void run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec,
                    service::JobContext& ctx) const = 0;
+  virtual void run_units(const storage::JobRecord&, const std::vector<service::WorkUnit>& units,
+                         const service::UnitRun& run, service::JobContext& ctx) const {
+    service::run_units_here(units, run, ctx);
+  }
 };
 
 class LocalExecutor final : public JobExecutor {

@@ -11,7 +11,8 @@ namespace cyclopt::server {
 
 WorkerJobContext::WorkerJobContext(const storage::JobRecord& job, const service::JobLimits& limits, double progress_hz,
                                    storage::ResultStore& store, LcmPublisher& publisher,
-                                   const std::atomic<bool>& cancel, const std::atomic<bool>& shutdown)
+                                   const std::atomic<bool>& cancel, const std::atomic<bool>& shutdown,
+                                   const JobExecutor& executor)
     : job_(job),
       limits_(limits),
       min_interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -20,6 +21,7 @@ WorkerJobContext::WorkerJobContext(const storage::JobRecord& job, const service:
       publisher_(publisher),
       cancel_(cancel),
       shutdown_(shutdown),
+      executor_(executor),
       points_stored_(job.points_stored),
       points_at_start_(job.points_stored) {}
 

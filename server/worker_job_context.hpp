@@ -9,6 +9,7 @@
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/storage/job_record.hpp"
 #include "cyclopt/storage/result_store.hpp"
+#include "job_executor.hpp"
 #include "lcm_publisher.hpp"
 
 #include <atomic>
@@ -23,7 +24,7 @@ class WorkerJobContext final : public service::JobContext {
  public:
   WorkerJobContext(const storage::JobRecord& job, const service::JobLimits& limits, double progress_hz,
                    storage::ResultStore& store, LcmPublisher& publisher, const std::atomic<bool>& cancel,
-                   const std::atomic<bool>& shutdown);
+                   const std::atomic<bool>& shutdown, const JobExecutor& executor);
 
   std::int64_t job_id() const override { return job_.id; }
   const service::JobLimits& limits() const override { return limits_; }
@@ -36,6 +37,10 @@ class WorkerJobContext final : public service::JobContext {
   void store_checkpoint(const std::string& key, const std::string& value) override;
   std::map<std::string, std::string> stored_checkpoints() override { return store_.checkpoints(job_.id); }
   service::StopReason stop_reason() override;
+  // The executor's (job_executor.hpp): here, or on Slurm.
+  void run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) override {
+    executor_.run_units(job_, units, run, *this);
+  }
 
   // Publishes the last report if rate limiting held it back.
   void flush_progress();
@@ -64,6 +69,7 @@ class WorkerJobContext final : public service::JobContext {
   LcmPublisher& publisher_;
   const std::atomic<bool>& cancel_;
   const std::atomic<bool>& shutdown_;
+  const JobExecutor& executor_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point last_publish_{};
   std::mutex progress_mutex_;  // last_publish_, pending_

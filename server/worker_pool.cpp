@@ -116,7 +116,7 @@ void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const se
   std::string error;
   if (!spec) spec = parse_stored_spec(job, kinds_, error);
   WorkerJobContext ctx(job, spec ? service::effective_limits(spec->common.limits, config_.caps) : config_.caps,
-                       config_.progress_hz, store_, publisher_, *cancel, shutdown_);
+                       config_.progress_hz, store_, publisher_, *cancel, shutdown_, executor_);
   if (spec) {
     try {
       executor_.run(job, *spec, ctx);

@@ -5,10 +5,13 @@
 
 #include "cyclopt/service/stored_start.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -72,45 +75,67 @@ std::string slurm_state(const std::string& id) {
   return r.exit_code == 0 ? trim(r.output) : "";
 }
 
+// One Slurm batch job of cyclopt-worker: the whole job, or one of its work units.
 class Unit {
  public:
-  Unit(const SlurmOptions& options, const storage::JobRecord& job, service::JobContext& ctx)
+  Unit(const SlurmOptions& options, const storage::JobRecord& job, service::JobContext& ctx,
+       std::optional<service::WorkUnit> unit = std::nullopt)
       : options_(options),
         job_(job),
         ctx_(ctx),
-        name_("cyclopt-" + std::to_string(job.id) + "-" + hex64(fnv1a(job.request_id)).substr(0, 8)),
+        unit_(std::move(unit)),
+        name_("cyclopt-" + std::to_string(job.id) + "-" + hex64(fnv1a(job.request_id)).substr(0, 8) +
+              (unit_ ? "-" + unit_->id : "")),
         spool_(std::filesystem::path(options.spool) / name_) {}
 
-  void run() {
+  // Re-attaches to the Slurm job still queued or running from before a server restart, takes the
+  // result of one that ended while the server was down, or submits. True: the unit has ended.
+  bool start() {
     spool_.create();
     if (const auto existing = find_by_name(name_); existing && active(existing->state)) {
-      slurm_id_ = existing->id;  // still queued or running from before a server restart
-      std::fprintf(stderr, "cycloptd: job %lld re-attached to Slurm job %s (%s)\n", static_cast<long long>(job_.id),
-                   slurm_id_.c_str(), existing->state.c_str());
-    } else {
-      ingest();
-      if (const auto outcome = spool_.read_outcome()) return finish(*outcome);  // ended while the server was down
-      submit();
+      slurm_id_ = existing->id;
+      std::fprintf(stderr, "cycloptd: job %lld: %s re-attached to Slurm job %s (%s)\n", static_cast<long long>(job_.id),
+                   name_.c_str(), slurm_id_.c_str(), existing->state.c_str());
+      return false;
     }
-    for (;;) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
-      ingest();
-      if (const auto p = spool_.read_progress()) ctx_.report_progress(*p);
-      const service::StopReason stop = ctx_.stop_reason();
-      if (stop == service::StopReason::shutdown) return;  // the unit keeps running; re-attached at restart
-      if (stop != service::StopReason::none) return stop_unit();
-      const std::string state = slurm_state(slurm_id_);
-      if (active(state)) continue;
-      ingest();
-      if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
-      if (submissions_ >= options_.max_submissions)
-        throw std::runtime_error("Slurm unit " + name_ + " (Slurm job " + slurm_id_ + ") ended " +
-                                 (state.empty() ? "with an unknown state" : state) + " without a result after " +
-                                 std::to_string(submissions_) + " submission(s)");
-      std::fprintf(stderr, "cycloptd: job %lld: Slurm job %s ended %s without a result; resubmitting\n",
-                   static_cast<long long>(job_.id), slurm_id_.c_str(), state.c_str());
-      submit();
-    }
+    ingest();
+    if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
+    submit();
+    return false;
+  }
+
+  // One look at the unit: ingests what it wrote, forwards its progress, stops it when the job
+  // stops, resubmits it when it left the queue without a result. True: the unit has ended (or
+  // the server is shutting down and leaves it running, re-attached at the next start).
+  bool poll() {
+    ingest();
+    if (const auto p = spool_.read_progress()) ctx_.report_progress(*p);
+    const service::StopReason stop = ctx_.stop_reason();
+    if (stop == service::StopReason::shutdown) return true;
+    if (stop != service::StopReason::none) return stop_unit();
+    const std::string state = slurm_state(slurm_id_);
+    if (active(state)) return false;
+    ingest();
+    if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
+    if (submissions_ >= options_.max_submissions)
+      throw std::runtime_error("Slurm unit " + name_ + " (Slurm job " + slurm_id_ + ") ended " +
+                               (state.empty() ? "with an unknown state" : state) + " without a result after " +
+                               std::to_string(submissions_) + " submission(s)");
+    std::fprintf(stderr, "cycloptd: job %lld: Slurm job %s ended %s without a result; resubmitting\n",
+                 static_cast<long long>(job_.id), slurm_id_.c_str(), state.c_str());
+    submit();
+    return false;
+  }
+
+  // Asks the worker to stop, gives it a grace period, then scancel. True (the unit has ended).
+  bool stop_unit() {
+    spool_.request_cancel();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kCancelGraceSeconds);
+    while (std::chrono::steady_clock::now() < deadline && active(slurm_state(slurm_id_)))
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (active(slurm_state(slurm_id_))) run_command({"scancel", slurm_id_});
+    ingest();
+    return true;
   }
 
  private:
@@ -122,6 +147,7 @@ class Unit {
     spec.limits = ctx_.limits();
     spec.run_seconds_before = job_.run_seconds;
     spec.submitted_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    spec.unit = unit_;
     spool_.write_spec(spec);
     spool_.write_stored_keys(ctx_.already_stored_points());
     spool_.write_checkpoints(ctx_.stored_checkpoints());
@@ -160,22 +186,15 @@ class Unit {
     }
   }
 
-  void stop_unit() {
-    spool_.request_cancel();
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kCancelGraceSeconds);
-    while (std::chrono::steady_clock::now() < deadline && active(slurm_state(slurm_id_)))
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    if (active(slurm_state(slurm_id_))) run_command({"scancel", slurm_id_});
-    ingest();
-  }
-
-  void finish(const UnitOutcome& outcome) {
-    if (!outcome.error.empty()) throw std::runtime_error(outcome.error);
+  bool finish(const UnitOutcome& outcome) {
+    if (!outcome.error.empty()) throw std::runtime_error(unit_ ? "work unit " + unit_->id + ": " + outcome.error : outcome.error);
+    return true;
   }
 
   const SlurmOptions& options_;
   const storage::JobRecord& job_;
   service::JobContext& ctx_;
+  std::optional<service::WorkUnit> unit_;
   std::string name_;
   UnitSpool spool_;
   std::string slurm_id_;
@@ -195,8 +214,39 @@ SlurmExecutor::SlurmExecutor(SlurmOptions options) : options_(std::move(options)
   options_.spool = std::filesystem::absolute(options_.spool).string();
 }
 
-void SlurmExecutor::run(const storage::JobRecord& job, const service::ValidatedJobSpec&, service::JobContext& ctx) const {
-  Unit(options_, job, ctx).run();
+void SlurmExecutor::run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const {
+  if (spec.kind->run_unit) return spec.run(ctx);  // the job runs here; its units come back through run_units
+  Unit unit(options_, job, ctx);
+  if (unit.start()) return;
+  do std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
+  while (!unit.poll());
+}
+
+void SlurmExecutor::run_units(const storage::JobRecord& job, const std::vector<service::WorkUnit>& units,
+                              const service::UnitRun&, service::JobContext& ctx) const {
+  std::vector<std::unique_ptr<service::UnitJobContext>> views;
+  std::vector<std::unique_ptr<Unit>> running;
+  for (const service::WorkUnit& u : units) {
+    views.push_back(std::make_unique<service::UnitJobContext>(ctx, u));
+    running.push_back(std::make_unique<Unit>(options_, job, *views.back(), u));
+  }
+  std::vector<bool> ended(units.size(), false);
+  try {
+    for (std::size_t i = 0; i < running.size(); ++i) ended[i] = running[i]->start();
+    while (std::find(ended.begin(), ended.end(), false) != ended.end()) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
+      for (std::size_t i = 0; i < running.size(); ++i)
+        if (!ended[i]) ended[i] = running[i]->poll();
+    }
+  } catch (...) {  // one unit failed: the job fails, the others are stopped
+    for (std::size_t i = 0; i < running.size(); ++i)
+      if (!ended[i]) try {
+          running[i]->stop_unit();
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "cycloptd: job %lld: could not stop a unit: %s\n", static_cast<long long>(job.id), e.what());
+        }
+    throw;
+  }
 }
 
 }  // namespace cyclopt::server::remote

@@ -1,6 +1,8 @@
 #pragma once
 // Runs each job as one Slurm batch job of cyclopt-worker (a "unit": the spool directory
-// SPOOL/cyclopt-<job id>-<hash of the request id>, named the same in Slurm).
+// SPOOL/cyclopt-<job id>-<hash of the request id>, named the same in Slurm); a job whose kind
+// splits into work units (JobKind::run_unit: the feet of a comparison) runs on the server thread
+// and each of its units is such a batch job (SPOOL/cyclopt-<job id>-<hash>-<unit id>).
 //   - submit: unit.json + stored_keys.json (points the store holds are skipped), then sbatch;
 //   - while it runs: ingest events (announce, curves, points) into the JobContext as they appear
 //     (idempotent: the server stays the only database writer), forward progress, and on cancel or
@@ -20,7 +22,12 @@ class SlurmExecutor final : public JobExecutor {
  public:
   explicit SlurmExecutor(SlurmOptions options);
   // Runs the job's stored spec text (service::runnable_spec_text) in cyclopt-worker, which parses it itself.
+  // A kind with work units runs here instead, and its units come to run_units.
   void run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const override;
+  // Every unit as its own Slurm job (SPOOL/cyclopt-<job id>-<hash>-<unit id>), all submitted at
+  // once; returns when all have ended. A unit that fails for good stops the others and fails the job.
+  void run_units(const storage::JobRecord& job, const std::vector<service::WorkUnit>& units,
+                 const service::UnitRun& run, service::JobContext& ctx) const override;
 
  private:
   SlurmOptions options_;

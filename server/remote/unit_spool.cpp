@@ -113,7 +113,8 @@ void UnitSpool::write_spec(const UnitSpec& s) const {
                          {"max_wall_seconds", s.limits.max_wall_seconds},
                          {"max_iterations", s.limits.max_iterations},
                          {"run_seconds_before", s.run_seconds_before},
-                         {"submitted_at", s.submitted_at}};
+                         {"submitted_at", s.submitted_at},
+                         {"unit", s.unit ? nlohmann::json{{"id", s.unit->id}, {"index", s.unit->index}} : nlohmann::json()}};
   write_file_atomically(dir_ / "unit.json", j.dump());
 }
 
@@ -129,6 +130,8 @@ UnitSpec UnitSpool::read_spec() const {
     s.limits.max_iterations = j.at("max_iterations").get<int>();
     s.run_seconds_before = j.at("run_seconds_before").get<double>();
     s.submitted_at = j.at("submitted_at").get<double>();
+    if (const nlohmann::json& u = j.at("unit"); !u.is_null())
+      s.unit = service::WorkUnit{u.at("id").get<std::string>(), u.at("index").get<int>()};
     return s;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(path.string() + ": " + e.what());

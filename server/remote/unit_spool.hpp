@@ -4,7 +4,8 @@
 // every file is written atomically (temporary file, fsync, rename), so a reader never sees half
 // a file, and a worker killed at any moment leaves only whole files behind.
 //
-//   DIR/unit.json          what to run: job id, task, spec, limits       (server -> worker)
+//   DIR/unit.json          what to run: job id, task, spec, limits, the work unit of
+//                          the job (JobKind::run_unit) or none: the whole job (server -> worker)
 //   DIR/stored_keys.json   points the store already holds: skipped        (server -> worker)
 //   DIR/checkpoints.json   the job's checkpoints the store holds: reused    (server -> worker)
 //   DIR/events/NNNNNNNN.json  announce / curve / point / checkpoint, in order (worker -> server)
@@ -39,6 +40,7 @@ struct UnitSpec {
   service::JobLimits limits;
   double run_seconds_before = 0.0;  // spent by earlier attempts; counts against limits.max_wall_seconds
   double submitted_at = 0.0;        // Unix seconds, just before sbatch (with started_at: queue latency)
+  std::optional<service::WorkUnit> unit;  // the part of the job to compute; none: run the whole job
 };
 
 // One entry of the worker's event stream.

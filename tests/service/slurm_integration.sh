@@ -2,10 +2,13 @@
 # The Slurm executor (issue 18) against a real single-node Slurm cluster (deploy/slurm/local-cluster.sh)
 # that this script starts and stops, inside a private network namespace (unshare -n): slurmctld,
 # slurmd, munged, cycloptd, the clients and every cyclopt-worker see only this namespace's loopback.
-#   1. the same multistart and sweep through the local executor and through Slurm: same points;
+#   1. the same multistart, sweep and foot comparison through the local executor and through Slurm:
+#      same points; the comparison's feet run as one Slurm job each (work units);
 #   2. scancel of a running unit, and kill -9 of a cyclopt-worker: the unit reruns, the job completes,
 #      no point lost or duplicated, integrity_check ok;
 #   3. kill -9 of cycloptd while a unit runs, restart: re-attached, never submitted twice;
+#   2c/3b. the same for the work units of a foot comparison: kill -9 of one foot's worker (that
+#      unit alone reruns, resuming from its journal), kill -9 of cycloptd (both re-attached);
 #   4. overhead: submission-to-start latency and wall time against the local executor.
 # Figures are printed (bench/results/slurm_executor.txt keeps a run's output).
 #
@@ -21,7 +24,7 @@ if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
     }
   done
   unshare -n true 2>/dev/null || { echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"; exit 77; }
-  exec timeout -k 5 280 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
+  exec timeout -k 5 420 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
 fi
 
 CYCLOPTD=$1 CYCLOPT=$2 WORKER=$3 CLUSTER=$4
@@ -92,6 +95,7 @@ same_points() {  # same_points DB_A JOB_A DB_B JOB_B: equal keys and status, obj
 }
 MULTISTART='{"scene": "walker", "task": "multistart", "foot": "point", "speed": 1.0, "objective": "f_mech", "multistart": {"starts": 4, "seed": 3, "scale": 0.05}}'
 SWEEP='{"scene": "walker", "task": "sweep", "foot": "point", "speeds": "0.8:0.2:1.2", "objective": "f_mech", "multistart": {"starts": 2, "seed": 1, "scale": 0.05}}'
+COMPARISON='{"scene": "walker", "task": "foot_comparison", "speeds": "1.0:0.1:1.1", "points": 50, "feet": ["P1-shoes-left-HM-SG"], "multistart": {"starts": 2, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}'
 TINY='{"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "sweep": {"parameter": "density", "values": "10:10:30"}}'
 
 echo "== 1. local executor and Slurm store the same points"
@@ -99,23 +103,33 @@ start_server local local
 read -r L_MS L_MS_T < <(run_job "$MULTISTART")
 read -r L_SW L_SW_T < <(run_job "$SWEEP")
 read -r L_TINY L_TINY_T < <(run_job "$TINY")
+read -r L_CMP L_CMP_T < <(run_job "$COMPARISON")
 stop_server
 start_server slurm slurm
 read -r S_MS S_MS_T < <(run_job "$MULTISTART")
 read -r S_SW S_SW_T < <(run_job "$SWEEP")
 read -r S_TINY S_TINY_T < <(run_job "$TINY")
+read -r S_CMP S_CMP_T < <(run_job "$COMPARISON")
 echo "multistart: $(same_points "$WORK/local.db" "$L_MS" "$WORK/slurm.db" "$S_MS")" || fail "multistart points differ"
 echo "sweep:      $(same_points "$WORK/local.db" "$L_SW" "$WORK/slurm.db" "$S_SW")" || fail "sweep points differ"
 same_points "$WORK/local.db" "$L_MS" "$WORK/slurm.db" "$S_MS" >/dev/null || fail "multistart points differ"
 same_points "$WORK/local.db" "$L_SW" "$WORK/slurm.db" "$S_SW" >/dev/null || fail "sweep points differ"
+echo "comparison: $(same_points "$WORK/local.db" "$L_CMP" "$WORK/slurm.db" "$S_CMP")" || fail "comparison points differ"
+same_points "$WORK/local.db" "$L_CMP" "$WORK/slurm.db" "$S_CMP" >/dev/null || fail "comparison points differ"
+CMP_UNITS=$(ls -d "$WORK"/spool/cyclopt-"$S_CMP"-*-foot-* 2>/dev/null | wc -l)
+CMP_SLURM=0
+for d in "$WORK"/spool/cyclopt-"$S_CMP"-*-foot-*; do
+  CMP_SLURM=$((CMP_SLURM + $(squeue -h -t all -n "$(basename "$d")" -o %i | sort -u | wc -l)))
+done
+[ "$CMP_UNITS" = 2 ] && [ "$CMP_SLURM" = 2 ] || fail "comparison: $CMP_UNITS unit spools, $CMP_SLURM Slurm jobs (2 feet: 2 expected)"
+echo "comparison: 2 feet -> 2 work units, one Slurm job each"
 
 echo "== 4. overhead"
-printf 'wall s      local    slurm\nmultistart  %6.2f  %6.2f\nsweep       %6.2f  %6.2f\n3-point job %6.2f  %6.2f\n' \
-  "$L_MS_T" "$S_MS_T" "$L_SW_T" "$S_SW_T" "$L_TINY_T" "$S_TINY_T"
+printf 'wall s      local    slurm\nmultistart  %6.2f  %6.2f\nsweep       %6.2f  %6.2f\n3-point job %6.2f  %6.2f\ncomparison  %6.2f  %6.2f  (2 feet: 2 units in parallel on Slurm, one after another locally)\n' \
+  "$L_MS_T" "$S_MS_T" "$L_SW_T" "$S_SW_T" "$L_TINY_T" "$S_TINY_T" "$L_CMP_T" "$S_CMP_T"
 # Submission-to-start latency per unit: unit.json's submitted_at (just before sbatch) to the
 # worker's started.json.
-for id in "$S_MS" "$S_SW" "$S_TINY"; do
-  d=$(ls -d "$WORK"/spool/cyclopt-"$id"-*)
+for d in $(ls -d "$WORK"/spool/cyclopt-"$S_MS"-* "$WORK"/spool/cyclopt-"$S_SW"-* "$WORK"/spool/cyclopt-"$S_TINY"-* "$WORK"/spool/cyclopt-"$S_CMP"-*); do
   python3 -c 'import json,sys; d=sys.argv[1]; s=json.load(open(d+"/unit.json"))["submitted_at"]; t=json.load(open(d+"/started.json"))["started_at"]; print("unit %s: sbatch -> cyclopt-worker running %.3f s" % (d.rsplit("/",1)[1], t - s))' "$d"
 done
 
@@ -157,6 +171,41 @@ start_server slurm slurm
 check_slow_job "$J" "kill -9 cycloptd"
 [ "$(slurm_ids "$J" | wc -l)" = 1 ] || fail "kill -9 cycloptd: the unit was submitted $(slurm_ids "$J" | wc -l) times"
 grep -q "re-attached" "$WORK/server-slurm.log" || fail "kill -9 cycloptd: no re-attach logged"
+
+# A comparison whose two feet (units) sweep 4 speeds each: long enough to be hit while running.
+LONG_CMP='{"scene": "walker", "task": "foot_comparison", "speeds": "0.8:0.1:1.1", "points": 50, "feet": ["P1-shoes-left-HM-SG"], "multistart": {"starts": 2, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 0.8}}'
+unit_dir() { ls -d "$WORK"/spool/cyclopt-"$1"-*-"$2" 2>/dev/null | head -1; }
+unit_slurm_jobs() { squeue -h -t all -n "$(basename "$(unit_dir "$1" "$2")")" -o %i | sort -u | wc -l; }
+running_unit() { [ -n "$(unit_dir "$1" "$2")" ] && [ -f "$(unit_dir "$1" "$2")/started.json" ]; }
+check_comparison() {  # check_comparison JOB WHAT: done, 4*2 + 4 + 2 points, none duplicated
+  "$CYCLOPT" watch "$1" --watch-timeout 200 >/dev/null 2>&1 || fail "$2: job $1 did not complete: $("$CYCLOPT" status "$1" 2>&1 | tail -2)"
+  local n dup
+  n=$(stored "$1")
+  dup=$(sqlite3 -batch -noheader "$WORK/slurm.db" "SELECT count(*) - count(DISTINCT curve_index || '/' || point_index) FROM solutions WHERE job_id = $1")
+  [ "$n" = 14 ] && [ "$dup" = 0 ] || fail "$2: $n points stored (14 expected), $dup duplicated"
+}
+
+echo "== 2c. kill -9 of the cyclopt-worker of one foot of a comparison"
+J=$(submit "$LONG_CMP")
+wait_for 60 running_unit "$J" foot-1 || fail "unit foot-1 did not start"
+wait_for 60 bash -c "ls $(unit_dir "$J" foot-1)/events | grep -q ." || fail "unit foot-1 wrote nothing"
+pkill -9 -f "cyclopt-worker --unit $(unit_dir "$J" foot-1)" || fail "no cyclopt-worker of foot-1 to kill"
+check_comparison "$J" "kill -9 of a unit's worker"
+[ "$(unit_slurm_jobs "$J" foot-1)" = 2 ] && [ "$(unit_slurm_jobs "$J" foot-0)" = 1 ] ||
+  fail "kill -9 of a unit's worker: Slurm jobs foot-0 $(unit_slurm_jobs "$J" foot-0), foot-1 $(unit_slurm_jobs "$J" foot-1) (1 and 2 expected)"
+echo "kill -9 of foot-1's worker: job $J done, 14/14 points, none duplicated, Slurm jobs foot-0 1, foot-1 2 (rerun)"
+
+echo "== 3b. kill -9 of cycloptd while a comparison's units run in Slurm, restart"
+J=$(submit "$LONG_CMP")
+wait_for 60 running_unit "$J" foot-0 || fail "unit foot-0 did not start"
+wait_for 60 running_unit "$J" foot-1 || fail "unit foot-1 did not start"
+kill -9 "$SERVER"; wait "$SERVER" 2>/dev/null || true; SERVER=""
+sleep 1
+start_server slurm slurm
+check_comparison "$J" "kill -9 cycloptd (units)"
+[ "$(unit_slurm_jobs "$J" foot-0)" = 1 ] && [ "$(unit_slurm_jobs "$J" foot-1)" = 1 ] ||
+  fail "kill -9 cycloptd (units): a unit was submitted twice (foot-0 $(unit_slurm_jobs "$J" foot-0), foot-1 $(unit_slurm_jobs "$J" foot-1))"
+echo "kill -9 cycloptd with 2 units running: job $J done, 14/14 points, none duplicated, each unit 1 Slurm job"
 [ "$(sqlite3 "$WORK/slurm.db" 'PRAGMA integrity_check')" = ok ] || fail "integrity_check"
 echo "integrity_check ok"
 stop_server

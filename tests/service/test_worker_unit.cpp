@@ -1,7 +1,9 @@
 // cyclopt-worker (server/cyclopt_worker_main.cpp) runs a unit from the spec text the server stored,
 // parsed once in its own process: a spec that is not valid there ends the unit with an error in
 // done.json naming the field (exit 0, as for any failed job; the server then fails the job with
-// it), and a valid one runs. No Slurm needed: the test writes the spool itself.
+// it), and a valid one runs. A work unit of a job (JobKind::run_unit) computes only its part: one
+// foot of a comparison stores that foot's curve and its sweep result, nothing of the other feet.
+// No Slurm needed: the test writes the spool itself.
 #include "remote/unit_spool.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +12,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace cyclopt::server::remote {
 namespace {
@@ -33,13 +38,15 @@ class WorkerUnit : public ::testing::Test {
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
   // Writes a unit with `spec_json` for `task`, runs cyclopt-worker on it; returns its spool.
-  UnitSpool run_unit(const std::string& name, const std::string& task, const std::string& spec_json) {
+  UnitSpool run_unit(const std::string& name, const std::string& task, const std::string& spec_json,
+                     std::optional<service::WorkUnit> work_unit = std::nullopt) {
     UnitSpool spool(dir_ / name);
     spool.create();
     UnitSpec unit;
     unit.job_id = 1;
     unit.task = task;
     unit.spec_json = spec_json;
+    unit.unit = work_unit;
     spool.write_spec(unit);
     spool.write_stored_keys({});
     spool.write_checkpoints({});
@@ -80,6 +87,43 @@ TEST_F(WorkerUnit, AValidStoredSpecRuns) {
   int points = 0;
   for (const auto& [n, e] : spool.read_events(0)) points += e.type == UnitEvent::Type::point;
   EXPECT_EQ(points, 3);
+}
+
+TEST_F(WorkerUnit, AWorkUnitOfAJobWhoseKindDoesNotSplitIsAnError) {
+  const UnitSpool spool = run_unit("no_units", "foot_sweep", foot_sweep_spec(5), service::WorkUnit{"part-0", 0});
+  const auto outcome = spool.read_outcome();
+  ASSERT_TRUE(outcome);
+  EXPECT_EQ(outcome->error, "unit.json: work unit 'part-0' of task 'foot_sweep', which does not split into units");
+  EXPECT_TRUE(spool.read_events(0).empty());
+}
+
+TEST_F(WorkerUnit, AComparisonFootUnitSweepsOnlyItsFoot) {
+  const std::string spec = nlohmann::json{{"scene", "walker"},
+                                          {"task", "foot_comparison"},
+                                          {"speeds", "1.0:0.1:1.1"},
+                                          {"points", 50},
+                                          {"feet", {"P1-shoes-left-HM-SG"}},
+                                          {"multistart", {{"starts", 2}, {"seed", 3}, {"scale", 0.02}}},
+                                          {"continuation", {{"seed_speeds", 1.0}}}}
+                               .dump();
+  const UnitSpool spool = run_unit("foot_0", "foot_comparison", spec, service::WorkUnit{"foot-0", 0});
+  const auto outcome = spool.read_outcome();
+  ASSERT_TRUE(outcome);
+  EXPECT_EQ(outcome->error, "");
+  std::set<int> curves;
+  int points = 0;
+  std::vector<std::string> checkpoints;
+  for (const auto& [n, e] : spool.read_events(0)) {
+    EXPECT_NE(e.type, UnitEvent::Type::announce) << "a unit announced points";
+    if (e.type == UnitEvent::Type::point) curves.insert(e.point.key.curve_index), ++points;
+    if (e.type == UnitEvent::Type::checkpoint && e.checkpoint_key.rfind("solve/", 0) != 0 &&
+        e.checkpoint_key.rfind("run/", 0) != 0)
+      checkpoints.push_back(e.checkpoint_key);
+  }
+  EXPECT_EQ(curves, (std::set<int>{1}));  // curve 1 + 0: the reference (point feet) only
+  EXPECT_EQ(points, 2);                    // its best point at both speeds
+  // The sweep result the job reads, under the unit's own key (the server adds "unit/foot-0/").
+  EXPECT_EQ(checkpoints, (std::vector<std::string>{"swept foot"}));
 }
 
 }  // namespace

@@ -3,10 +3,13 @@
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/service/foot_sweep_checkpoint.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/sweep_fields.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -14,9 +17,9 @@
 #include "cyclopt/studies/walker_family.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -82,62 +85,83 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
   return j;
 }
 
+// Each foot's sweep is a work unit "foot-<k>" (issue 18; k = 0 the reference): it stores the
+// foot's best point per speed as curve 1 + k as soon as its sweep ends, then its summary as the
+// unit's checkpoint kSweptFoot, which the job reads to compare the feet. Within a unit the sweep
+// keeps its journal (sweep_checkpoints.hpp), so an interrupted unit resumes where it was.
+constexpr const char* kSweptFoot = "swept foot";
+
+std::string foot_unit_id(std::size_t k) { return "foot-" + std::to_string(k); }
+
+void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
+  if (ctx.stored_checkpoints().count(kSweptFoot)) return;  // swept by an earlier attempt
+  if (unit.index < 0 || static_cast<std::size_t>(unit.index) >= job.feet.size())
+    throw std::logic_error("foot_comparison: no foot " + std::to_string(unit.index) + " in the job");
+  const std::size_t k = static_cast<std::size_t>(unit.index);
+  const int feet = static_cast<int>(job.feet.size());
+  const int speeds = static_cast<int>(job.walker.speeds.size());
+  WalkerJob w = job.walker;
+  w.foot = job.feet[k];
+  const walker::WalkerModel<double> model = w.model();
+  studies::SpeedSweepOptions o = sweep_options(job.walker, job.sweeps, job.walker.starts);
+  o.continuation.corrector.should_stop = stop_predicate(ctx);
+  o.journal = sweep_journal(ctx);
+  // Progress names the foot and the phase of its sweep; points and ETA count the feet after it
+  // as if swept one after another at this foot's pace.
+  const auto started = std::chrono::steady_clock::now();
+  PhaseProgress progress(ctx, {.curve_id = 1 + unit.index, .points_total = feet * speeds});
+  o.continuation.corrector.on_iteration = progress.iterations();
+  o.on_progress = [&](const studies::SweepProgress& sp) {
+    ProgressReport r = sweep_progress_report(sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " +
+                                                     job.feet[k].name);
+    r.curve_id = 1 + unit.index;
+    r.points_done = unit.index * speeds + sp.speeds_reached;
+    r.points_total = feet * speeds;
+    const double per_foot = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + sp.eta_seconds;
+    r.eta_seconds = sp.eta_seconds + static_cast<double>(feet - 1 - unit.index) * per_foot;
+    progress.set(r);
+  };
+  const studies::FootSweepSummary s = studies::sweep_foot(job.feet[k].name, model, job.walker.problem, o, [&](const studies::CurvePoint&) {
+    return ctx.stop_reason() == StopReason::none;
+  });
+  if (s.stopped || ctx.stop_reason() != StopReason::none) return;  // the next attempt resumes from the journal
+  const studies::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
+  for (const storage::SolutionPoint& p : best_points(family, s, 1 + unit.index)) ctx.store_point(p);
+  ctx.store_checkpoint(kSweptFoot, foot_sweep_to_json(s).dump());
+}
+
+// What each foot's unit left: its sweep summary (std::runtime_error naming the unit if missing).
+std::vector<studies::FootSweepSummary> swept_feet(const ComparisonJob& job, JobContext& ctx) {
+  const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
+  std::vector<studies::FootSweepSummary> swept;
+  for (std::size_t k = 0; k < job.feet.size(); ++k) {
+    const auto it = stored.find(unit_checkpoint_prefix(foot_unit_id(k)) + kSweptFoot);
+    if (it == stored.end()) throw std::runtime_error("work unit " + foot_unit_id(k) + " ended without its sweep result");
+    try {
+      swept.push_back(foot_sweep_from_json(nlohmann::json::parse(it->second)));
+    } catch (const std::exception& e) {
+      throw std::runtime_error("work unit " + foot_unit_id(k) + ": unreadable sweep result (" + e.what() + ")");
+    }
+  }
+  return swept;
+}
+
 void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   const int feet = static_cast<int>(job.feet.size());
   const int speeds = static_cast<int>(job.walker.speeds.size());
-  std::vector<studies::ComparedFoot> compared;
-  for (int k = 0; k < feet; ++k) {
-    WalkerJob w = job.walker;
-    w.foot = job.feet[static_cast<std::size_t>(k)];
-    compared.push_back({job.feet[static_cast<std::size_t>(k)].name, w.model()});
-  }
-  studies::FootComparisonOptions o;
-  o.reference = 0;
-  o.sweep = sweep_options(job.walker, job.sweeps, job.walker.starts);
-  o.sweep.continuation.corrector.should_stop = stop_predicate(ctx);
   ctx.announce(feet * speeds + speeds + feet);
   ctx.add_curve(0, "best foot per speed", "speed");
   for (int k = 0; k < feet; ++k)
     ctx.add_curve(1 + k, "foot " + job.feet[static_cast<std::size_t>(k)].name + (k == 0 ? " (reference)" : ""), "speed");
   ctx.add_curve(feet + 1, "mean f_mech per foot", "curve");
-  std::vector<std::vector<storage::SolutionPoint>> stored(static_cast<std::size_t>(feet));
-  std::atomic<std::size_t> running = 0;  // the foot being swept (read by multistart workers too)
   const auto started = std::chrono::steady_clock::now();
-  std::atomic<double> feet_seconds = 0.0;  // of the feet swept
-  const auto on_foot = [&](std::size_t k, const studies::FootSweepSummary& s, const studies::SpeedSweepResult&) {
-    const studies::ParametricProblem family = studies::walker_family(compared[k].model, job.walker.problem, "speed");
-    for (storage::SolutionPoint& p : best_points(family, s, 1 + static_cast<int>(k))) {
-      ctx.store_point(p);
-      stored[k].push_back(std::move(p));
-    }
-    running = std::min(k + 1, compared.size() - 1);
-    feet_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return ctx.stop_reason() == StopReason::none;
-  };
-  // Progress names the foot being swept and the phase of its sweep; the ETA is that sweep's plus
-  // the feet still to sweep at the mean time of the feet swept so far.
-  PhaseProgress progress(ctx, {.curve_id = 1, .points_total = feet * speeds});
-  o.sweep.continuation.corrector.on_iteration = progress.iterations();
-  o.sweep.on_progress = [&](const studies::SweepProgress& sp) {
-    const std::size_t k = running;
-    ProgressReport r = sweep_progress_report(
-        sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " + job.feet[k].name);
-    r.curve_id = 1 + static_cast<int>(k);
-    r.points_done = static_cast<int>(k) * speeds + sp.speeds_reached;
-    r.points_total = feet * speeds;
-    const double per_foot =
-        k > 0 ? feet_seconds / static_cast<double>(k)
-              : std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + sp.eta_seconds;
-    r.eta_seconds = sp.eta_seconds + static_cast<double>(feet - 1 - static_cast<int>(k)) * per_foot;
-    progress.set(r);
-  };
-  const auto on_point = [&](std::size_t k, const continuation::CurvePoint&) {
-    running = k;
-    return ctx.stop_reason() == StopReason::none;
-  };
-  const studies::FootComparisonResult r =
-      studies::compare_feet(compared, job.walker.problem, o, on_point, on_foot);
+  std::vector<WorkUnit> units;
+  for (int k = 0; k < feet; ++k) units.push_back({foot_unit_id(static_cast<std::size_t>(k)), k});
+  ctx.run_units(units, [&job](const WorkUnit& unit, JobContext& c) { run_foot(job, unit, c); });
   if (ctx.stop_reason() != StopReason::none) return;
+  const studies::FootComparisonResult r = studies::summarise_feet(job.walker.speeds, swept_feet(job, ctx), 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::map<int, std::vector<storage::SolutionPoint>> best_of;  // curve 1 + k's points, of the feet best somewhere
   for (int i = 0; i < speeds; ++i) {
     const int best = r.best_foot[static_cast<std::size_t>(i)];
     const double ref = r.feet[0].f_mech[static_cast<std::size_t>(i)];
@@ -149,7 +173,13 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       p.status = "not found";
       c.reason = "no compared foot has a point at this speed";
     } else {
-      p = stored[static_cast<std::size_t>(best)][static_cast<std::size_t>(i)];
+      if (!best_of.count(best)) {
+        WalkerJob w = job.walker;
+        w.foot = job.feet[static_cast<std::size_t>(best)];
+        best_of[best] = best_points(studies::walker_family(w.model(), job.walker.problem, "speed"),
+                                    r.feet[static_cast<std::size_t>(best)], 1 + best);
+      }
+      p = best_of[best][static_cast<std::size_t>(i)];
       p.key = {0, i};
       c = p.values.get<records::ComparedSpeedRecord>();
       if (std::isfinite(ref) && ref > 0.0) c.saving = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
@@ -180,7 +210,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
     if (k == 0) {
       f.envelope_saving = r.envelope_saving;
       f.envelope_common_speeds = r.envelope_common_speeds;
-      f.comparison_seconds = r.seconds;
+      f.comparison_seconds = seconds;
     }
     p.values = f;
     ctx.store_point(p);
@@ -225,8 +255,10 @@ JobKind foot_comparison_kind() {
   for (const std::string& f : walker_job_fields(true))
     if (f != "foot" && f != "start" && f != "free_parameters") fields.push_back(f);
   fields.insert(fields.end(), {"feet", "reference", "continuation"});
-  return typed_job_kind<ComparisonJob>("foot_comparison", {"walker"}, fields, parse_comparison_job, run_comparison,
-                                       comparison_job_json, comparison_cost);
+  return with_work_units<ComparisonJob>(typed_job_kind<ComparisonJob>("foot_comparison", {"walker"}, fields,
+                                                                      parse_comparison_job, run_comparison,
+                                                                      comparison_job_json, comparison_cost),
+                                        run_foot);
 }
 
 }  // namespace cyclopt::service

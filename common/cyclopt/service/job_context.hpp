@@ -6,9 +6,11 @@
 #include "cyclopt/storage/solution_point.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace cyclopt::service {
 
@@ -20,6 +22,19 @@ struct JobLimits {
   double max_wall_seconds = 3600.0;
   int max_iterations = 100000;  // summed over all points (solver iterations or point evaluations)
 };
+
+class JobContext;
+
+// An independent part of a job (issue 18): the foot of a comparison, say. A job kind that splits
+// its work this way gives JobKind::run_unit, which computes part `index` of the kind's spec; the
+// job's run() hands the parts to JobContext::run_units, and the server's executor decides where
+// they run (here, or each as its own Slurm batch job of cyclopt-worker).
+struct WorkUnit {
+  std::string id;  // unique in its job and the same in every attempt, [a-z0-9-] (e.g. "foot-3")
+  int index = 0;   // the part of the spec it computes
+};
+// Computes one unit through the context it is given (a unit_job_context.hpp view of the job).
+using UnitRun = std::function<void(const WorkUnit& unit, JobContext& ctx)>;
 
 class JobContext {
  public:
@@ -49,6 +64,13 @@ class JobContext {
 
   // Poll between points and inside solver callbacks; return as soon as it is not `none`.
   virtual StopReason stop_reason() = 0;
+
+  // Runs the job's units and returns when every one has ended, or early once stop_reason() is not
+  // `none`; throws (std::runtime_error naming the unit) when one failed. Each unit sees the job
+  // through a UnitJobContext (unit_job_context.hpp): the job's curves and points, its own
+  // checkpoints. Default: here, one after another (run_units_here); the server's context asks its
+  // executor. `run` must compute what JobKind::run_unit computes: a remote worker calls that.
+  virtual void run_units(const std::vector<WorkUnit>& units, const UnitRun& run);
 };
 
 }  // namespace cyclopt::service

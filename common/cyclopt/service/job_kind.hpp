@@ -109,7 +109,18 @@ struct JobKind {
   // that submitting them again gives the same job), stored with the job (resolved_spec.hpp).
   // Every kind has one (JobKindRegistry::add checks).
   std::function<nlohmann::json(const KindSpec& spec)> resolve;
+  // Kinds whose run() splits the job into work units (JobContext::run_units, issue 18): computes
+  // one unit, as cyclopt-worker does for a unit run elsewhere. Empty: the job is one piece of work.
+  std::function<void(const KindSpec& spec, const WorkUnit& unit, JobContext& ctx)> run_unit;
 };
+
+// The one cast: a kind is only ever given what its own parse returned.
+template <class Spec>
+const Spec& spec_of(const KindSpec& s, const std::string& task) {
+  const auto* t = dynamic_cast<const KindSpecOf<Spec>*>(&s);
+  if (!t) throw std::logic_error("job kind '" + task + "' was given a spec that another kind parsed");
+  return t->spec();
+}
 
 // A JobKind whose parse returns a Spec and whose run, resolve and estimate take it.
 template <class Spec>
@@ -118,19 +129,22 @@ JobKind typed_job_kind(std::string task, std::vector<std::string> scenes, std::v
                        std::function<void(const Spec&, JobContext&)> run,
                        std::function<nlohmann::json(const Spec&)> resolve,
                        std::function<JobCost(const Spec&)> estimate = {}) {
-  // The one cast: a kind is only ever given what its own parse returned.
-  auto typed = [task](const KindSpec& s) -> const Spec& {
-    const auto* t = dynamic_cast<const KindSpecOf<Spec>*>(&s);
-    if (!t) throw std::logic_error("job kind '" + task + "' was given a spec that another kind parsed");
-    return t->spec();
-  };
-  JobKind kind{std::move(task), std::move(scenes), std::move(fields), {}, {}, {}, {}};
+  auto typed = [task](const KindSpec& s) -> const Spec& { return spec_of<Spec>(s, task); };
+  JobKind kind{std::move(task), std::move(scenes), std::move(fields), {}, {}, {}, {}, {}};
   kind.parse = [parse = std::move(parse)](const nlohmann::json& spec, const CommonJobFields& common) {
     return std::shared_ptr<const KindSpec>(std::make_shared<const KindSpecOf<Spec>>(parse(spec, common)));
   };
   kind.run = [typed, run = std::move(run)](const KindSpec& s, JobContext& ctx) { run(typed(s), ctx); };
   if (resolve) kind.resolve = [typed, resolve = std::move(resolve)](const KindSpec& s) { return resolve(typed(s)); };
   if (estimate) kind.estimate = [typed, estimate = std::move(estimate)](const KindSpec& s) { return estimate(typed(s)); };
+  return kind;
+}
+
+// A typed kind (typed_job_kind) whose run() splits its jobs into work units computed by run_unit.
+template <class Spec>
+JobKind with_work_units(JobKind kind, std::function<void(const Spec&, const WorkUnit&, JobContext&)> run_unit) {
+  kind.run_unit = [task = kind.task, run_unit = std::move(run_unit)](const KindSpec& s, const WorkUnit& unit,
+                                                                    JobContext& ctx) { run_unit(spec_of<Spec>(s, task), unit, ctx); };
   return kind;
 }
 

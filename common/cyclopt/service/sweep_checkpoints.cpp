@@ -27,34 +27,6 @@ Eigen::VectorXd vector_from_json(const json& a) {
   return v;
 }
 
-json point_to_json(const continuation::CurvePoint& p) {
-  return {{"parameter", p.parameter},       {"curve_id", p.curve_id},
-          {"on_grid", p.on_grid},           {"converged", p.converged},
-          {"x", vector_to_json(p.x)},       {"objective", p.objective},
-          {"corrector", summary_to_json(p.corrector)},
-          {"predictor_attempts", p.predictor_attempts},
-          {"predictor_steps", p.predictor_steps},
-          {"kappa", p.kappa},               {"trust_region", p.trust_region},
-          {"seconds", p.seconds}};
-}
-
-continuation::CurvePoint point_from_json(const json& j) {
-  continuation::CurvePoint p;
-  p.parameter = number(j.at("parameter"));
-  p.curve_id = j.at("curve_id").get<int>();
-  p.on_grid = j.at("on_grid").get<bool>();
-  p.converged = j.at("converged").get<bool>();
-  p.x = vector_from_json(j.at("x"));
-  p.objective = number(j.at("objective"));
-  p.corrector = summary_from_json(j.at("corrector"));
-  p.predictor_attempts = j.at("predictor_attempts").get<int>();
-  p.predictor_steps = j.at("predictor_steps").get<int>();
-  p.kappa = number(j.at("kappa"));
-  p.trust_region = number(j.at("trust_region"));
-  p.seconds = number(j.at("seconds"));
-  return p;
-}
-
 // Parses one checkpoint; nullopt (computed again) when it is missing or unreadable.
 template <class T>
 std::optional<T> find(const std::map<std::string, std::string>& stored, const std::string& key,
@@ -76,6 +48,34 @@ std::string solve_key(int batch, int start) {
 std::string run_key(int run) { return "run/" + std::to_string(run); }
 
 }  // namespace
+
+json curve_point_to_json(const continuation::CurvePoint& p) {
+  return {{"parameter", p.parameter},       {"curve_id", p.curve_id},
+          {"on_grid", p.on_grid},           {"converged", p.converged},
+          {"x", vector_to_json(p.x)},       {"objective", p.objective},
+          {"corrector", summary_to_json(p.corrector)},
+          {"predictor_attempts", p.predictor_attempts},
+          {"predictor_steps", p.predictor_steps},
+          {"kappa", p.kappa},               {"trust_region", p.trust_region},
+          {"seconds", p.seconds}};
+}
+
+continuation::CurvePoint curve_point_from_json(const json& j) {
+  continuation::CurvePoint p;
+  p.parameter = number(j.at("parameter"));
+  p.curve_id = j.at("curve_id").get<int>();
+  p.on_grid = j.at("on_grid").get<bool>();
+  p.converged = j.at("converged").get<bool>();
+  p.x = vector_from_json(j.at("x"));
+  p.objective = number(j.at("objective"));
+  p.corrector = summary_from_json(j.at("corrector"));
+  p.predictor_attempts = j.at("predictor_attempts").get<int>();
+  p.predictor_steps = j.at("predictor_steps").get<int>();
+  p.kappa = number(j.at("kappa"));
+  p.trust_region = number(j.at("trust_region"));
+  p.seconds = number(j.at("seconds"));
+  return p;
+}
 
 json summary_to_json(const nlp::SolverSummary& s) {
   return {{"termination", static_cast<int>(s.termination)},
@@ -118,7 +118,7 @@ nlp::SolverSummary summary_from_json(const json& j) {
 
 json run_to_json(const continuation::ContinuationResult& r) {
   json points = json::array(), jumps = json::array();
-  for (const continuation::CurvePoint& p : r.points) points.push_back(point_to_json(p));
+  for (const continuation::CurvePoint& p : r.points) points.push_back(curve_point_to_json(p));
   for (const continuation::CurveJump& c : r.jumps)
     jumps.push_back({c.from_curve, c.to_curve, c.from_parameter, c.to_parameter, c.objective_before, c.objective_after,
                      c.relative_distance});
@@ -134,7 +134,7 @@ json run_to_json(const continuation::ContinuationResult& r) {
 
 continuation::ContinuationResult run_from_json(const json& j) {
   continuation::ContinuationResult r;
-  for (const json& p : j.at("points")) r.points.push_back(point_from_json(p));
+  for (const json& p : j.at("points")) r.points.push_back(curve_point_from_json(p));
   for (const json& c : j.at("jumps"))
     r.jumps.push_back({c.at(0).get<int>(), c.at(1).get<int>(), number(c.at(2)), number(c.at(3)), number(c.at(4)),
                        number(c.at(5)), number(c.at(6))});

@@ -21,6 +21,8 @@ studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix =
 
 nlohmann::json summary_to_json(const nlp::SolverSummary& s);
 nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
+nlohmann::json curve_point_to_json(const continuation::CurvePoint& p);
+continuation::CurvePoint curve_point_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
 nlohmann::json run_to_json(const continuation::ContinuationResult& r);
 continuation::ContinuationResult run_from_json(const nlohmann::json& j);
 

@@ -1,6 +1,5 @@
 #include "cyclopt/studies/foot_comparison.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -93,34 +92,17 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
   return r;
 }
 
-FootComparisonResult compare_feet(const std::vector<ComparedFoot>& feet, const walker::GaitProblemOptions& problem,
-                                  const FootComparisonOptions& options, const FootPointCallback& on_point,
-                                  const FootDoneCallback& on_foot) {
-  if (feet.empty()) throw std::invalid_argument("foot comparison: no feet");
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<FootSweepSummary> done;
-  bool stop = false;
-  for (std::size_t k = 0; k < feet.size() && !stop; ++k) {
-    const SpeedSweepResult sweep = speed_sweep(feet[k].model, problem, options.sweep, [&](const CurvePoint& c) {
-      if (on_point && !on_point(k, c)) stop = true;
-      return !stop;
-    });
-    FootSweepSummary s = summarise_sweep(feet[k].name, feet[k].model, problem, sweep);
-    s.stopped = stop;
-    done.push_back(std::move(s));
-    if (!stop && on_foot && !on_foot(k, done.back(), sweep)) stop = true;
-  }
-  FootComparisonResult r;
-  if (options.reference < done.size()) {
-    r = summarise_feet(options.sweep.speeds, std::move(done), options.reference);
-  } else {  // stopped before the reference was swept: no savings
-    r.speeds = options.sweep.speeds;
-    r.feet = std::move(done);
-    r.reference = options.reference;
-    r.envelope_saving = kNaN;
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
+                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
+                            const PointCallback& on_point) {
+  bool stopped = false;
+  const SpeedSweepResult sweep = speed_sweep(model, problem, options, [&](const CurvePoint& c) {
+    if (on_point && !on_point(c)) stopped = true;
+    return !stopped;
+  });
+  FootSweepSummary s = summarise_sweep(name, model, problem, sweep);
+  s.stopped = stopped;
+  return s;
 }
 
 }  // namespace cyclopt::studies

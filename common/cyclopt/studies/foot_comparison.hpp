@@ -1,6 +1,7 @@
 #pragma once
 // The foot comparison of seed 001 section 9.2 (Fig. 9.9, 9.12, 9.14, 9.17, 9.19a): one chapter-9
-// speed sweep (speed_sweep.hpp) per foot over the same grid, then per grid speed the best foot
+// speed sweep (speed_sweep.hpp) per foot over the same grid (sweep_foot; independent, so a job
+// may run them anywhere: foot_comparison_kind.hpp), then per grid speed the best foot
 // (lowest f_mech, eq. 5.102, of the feet being compared, the reference excluded) and per foot its
 // mean f_mech and the saving against the reference feet (the seed: point feet, Table D.1):
 //   saving = 1 - mean(f_mech of the foot) / mean(f_mech of the reference),
@@ -18,17 +19,6 @@
 
 namespace cyclopt::studies {
 
-struct ComparedFoot {
-  std::string name;                  // e.g. "P2-shoes-left-HMT-SG" or "point"
-  walker::WalkerModel<double> model;
-};
-
-struct FootComparisonOptions {
-  SpeedSweepOptions sweep;           // speeds, starts, continuation, ... for every foot
-  std::size_t reference = 0;         // index into the feet: what savings are measured against
-                                     // (swept first is best: a stopped comparison keeps its savings)
-};
-
 // One foot's sweep, reduced to its best point per speed.
 struct FootSweepSummary {
   std::string name;
@@ -40,7 +30,7 @@ struct FootSweepSummary {
   double saving = 0.0;                 // against the reference, over the same speeds (0 for the reference)
   double seconds = 0.0;                // wall time of its sweep
   int curves = 0;
-  bool stopped = false;                // on_point asked to stop during its sweep
+  bool stopped = false;                // sweep_foot's on_point asked to stop during its sweep
 };
 
 struct FootComparisonResult {
@@ -53,7 +43,6 @@ struct FootComparisonResult {
   int envelope_common_speeds = 0;
   int best_mean_foot = -1;             // the compared foot with the largest saving among those
                                        // reaching every speed the reference reaches (else among all)
-  double seconds = 0.0;
 };
 
 // Mean f_mech and saving of every foot against feet[reference]; the per-speed winners and the
@@ -65,15 +54,10 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
 FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerModel<double>& model,
                                  const walker::GaitProblemOptions& problem, const SpeedSweepResult& sweep);
 
-// Sweeps the feet one after another (each sweep's multistarts run in parallel threads).
-// on_point(foot index, point) gets every new curve point of the running sweep; on_foot(index,
-// summary, sweep) each finished sweep. Either returning false stops the comparison; the result
-// then holds the feet done so far.
-using FootPointCallback = std::function<bool(std::size_t foot, const CurvePoint& point)>;
-using FootDoneCallback =
-    std::function<bool(std::size_t foot, const FootSweepSummary& summary, const SpeedSweepResult& sweep)>;
-FootComparisonResult compare_feet(const std::vector<ComparedFoot>& feet, const walker::GaitProblemOptions& problem,
-                                  const FootComparisonOptions& options, const FootPointCallback& on_point = {},
-                                  const FootDoneCallback& on_foot = {});
+// One foot's sweep, reduced: speed_sweep then summarise_sweep. on_point as speed_sweep's; when it
+// returns false the sweep stops and the summary says `stopped` (it holds what was found).
+FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
+                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
+                            const PointCallback& on_point = {});
 
 }  // namespace cyclopt::studies

@@ -34,19 +34,12 @@ std::string speed_text(double v) {
   return buf;
 }
 
-// known: gaits of this foot solved already (the design's, seeding its fixed-foot sweep), if any.
-FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
-                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& o,
-                            std::vector<KnownGait> known = {}) {
-  SpeedSweepOptions with_known = o;
-  with_known.known_gaits = std::move(known);
-  return summarise_sweep(name, model, problem, speed_sweep(model, problem, with_known));
-}
-
-// The study's sweep options with the journal of `part`.
-SpeedSweepOptions journaled(const FootDesignOptions& o, const std::string& part) {
+// The study's sweep options with the journal of `part`; known: gaits of the swept foot solved
+// already (the design's, seeding its fixed-foot sweep), if any.
+SpeedSweepOptions journaled(const FootDesignOptions& o, const std::string& part, std::vector<KnownGait> known = {}) {
   SpeedSweepOptions so = o.sweep;
   if (o.journal) so.journal = o.journal(part);
+  so.known_gaits = std::move(known);
   return so;
 }
 
@@ -228,15 +221,15 @@ DensityDesign DesignStudy::at(double rho, const FootDesignResult& references) {
   // Each sweep starts from its foot's own optimal gait (the free-foot optimum is a KKT point of the
   // fixed-foot problem too), then adds the seed multistarts: without it the sweep of the rho 10
   // design reached f_mech 0.0413 at 2.3 m/s where the design has 0.0344.
-  d.high = sweep_foot(name + " design", model_of(best.foot), problem_, journaled(o_, name + "/high"),
-                      {{o_.design_speed, best.z.head(gait_count)}});
+  d.high = sweep_foot(name + " design", model_of(best.foot), problem_,
+                      journaled(o_, name + "/high", {{o_.design_speed, best.z.head(gait_count)}}));
   d.saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.high);
   d.saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.high);
   d.sweep_seconds = seconds_since(t2);
   if (!finished(d, DesignPhase::high_sweep)) return d.stopped = true, d;
   if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
-  d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_, journaled(o_, name + "/low"),
-                     {{d.low_speed, low_speed_gait}});
+  d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_,
+                     journaled(o_, name + "/low", {{d.low_speed, low_speed_gait}}));
   d.sweep_seconds = seconds_since(t2);
   d.low_saving_vs_start = saving(o_.sweep.speeds, references.start_foot, d.low);
   d.low_saving_vs_point = saving(o_.sweep.speeds, references.point_feet, d.low);

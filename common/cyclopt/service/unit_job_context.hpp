@@ -1,0 +1,44 @@
+#pragma once
+// How a work unit (job_context.hpp) sees its job: the job's limits, progress, curves, points and
+// stop reason unchanged, but checkpoints of its own, kept in the job's under "unit/<id>/" (so the
+// sweep journals of two feet never mix, and a unit's result checkpoint names its unit). The same
+// view wraps a unit computed here and a unit whose events cycloptd ingests from a cyclopt-worker,
+// so both store the same keys.
+
+#include "cyclopt/service/job_context.hpp"
+
+namespace cyclopt::service {
+
+// "unit/<id>/": the prefix of a unit's checkpoints in its job's.
+std::string unit_checkpoint_prefix(const std::string& unit_id);
+
+class UnitJobContext final : public JobContext {
+ public:
+  UnitJobContext(JobContext& job, const WorkUnit& unit);
+
+  std::int64_t job_id() const override { return job_.job_id(); }
+  const JobLimits& limits() const override { return job_.limits(); }
+  void report_progress(const ProgressReport& report) override { job_.report_progress(report); }
+  void count_iterations(int n) override { job_.count_iterations(n); }
+  // The job announced the points of all its units: a unit announcing throws std::logic_error.
+  void announce(int points_total) override;
+  void add_curve(int curve_index, const std::string& name, const std::string& parameter_name) override {
+    job_.add_curve(curve_index, name, parameter_name);
+  }
+  bool store_point(const storage::SolutionPoint& point) override { return job_.store_point(point); }
+  std::set<storage::PointKey> already_stored_points() override { return job_.already_stored_points(); }
+  void store_checkpoint(const std::string& key, const std::string& value) override;
+  std::map<std::string, std::string> stored_checkpoints() override;  // this unit's, without the prefix
+  StopReason stop_reason() override { return job_.stop_reason(); }
+  // Units do not split again: throws std::logic_error.
+  void run_units(const std::vector<WorkUnit>& units, const UnitRun& run) override;
+
+ private:
+  JobContext& job_;
+  std::string prefix_;
+};
+
+// JobContext::run_units' default: each unit in turn on this thread, until the job stops.
+void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job);
+
+}  // namespace cyclopt::service
