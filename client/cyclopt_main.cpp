@@ -13,6 +13,7 @@
 #include "cyclopt/plot/foot_design_report.hpp"
 #include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/sensitivity_figures.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
@@ -58,6 +59,8 @@ results database file directly (read-only) when given --db FILE.
   submit --task foot_fit --trials FILE.trc|FILE.csv,... [--name TEXT] ...
   submit --task foot_design [--foot FILE.json|PRESET] [--densities LIST|LO:STEP:HI]
          [--design-speed V] [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N] ...
+  submit --task sensitivity --foot FILE.json|PRESET --speed V [--parameters P,P,...]
+         [--relative-range R] [--steps N] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
                      spec, --speeds a walker job of TASK (default sweep); foot_comparison
                      sweeps --feet (default: the 16 of seed 001 section 9.2) and --reference
@@ -66,7 +69,10 @@ results database file directly (read-only) when given --db FILE.
                      other layouts: cyclopt-foot fit --job-spec FILE); foot_design designs
                      a foot per density from --foot (default P2-shoes-left-HMT) with
                      --starts design starts at --design-speed (seed 001 section 10.2;
-                     defaults 10:10:70 kg/m^2, 20 starts, 2.3 m/s of 0.3:0.1:2.3). Resent every
+                     defaults 10:10:70 kg/m^2, 20 starts, 2.3 m/s of 0.3:0.1:2.3); sensitivity
+                     optimises at --speed and compares d f_mech / d p from the KKT point with
+                     a +-R continuation of each parameter (seed 001 section 10.1; defaults:
+                     every parameter, R 0.1, 5 steps each way). Resent every
                      0.5 s until the server answers (same request id, so never queued
                      twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
@@ -76,7 +82,9 @@ results database file directly (read-only) when given --db FILE.
                      a job's solved points (default): for walker jobs one line per point
                      (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
                      loss, status, curve); for a foot_design job one line per density (its
-                     design, masses, active bounds, mean f_mech, savings); --wide / --csv
+                     design, masses, active bounds, mean f_mech, savings); for a
+                     sensitivity job one line per parameter (KKT df/dp, relative, Delta f
+                     predicted and by continuation at both ends, verdict); --wide / --csv
                      every scalar, --json everything
   export JOB [--out FILE]
                      everything about a job as JSON: spec, events, curves, points, trajectories
@@ -92,7 +100,9 @@ results database file directly (read-only) when given --db FILE.
                      measured against model ankle and the fitted outline per converged fit,
                      Fig. 4.3/4.4); foot-design (a foot_design job: the designs over the
                      start foot, Fig. 10.5/10.6, f_mech per density with the start foot and
-                     point feet, Fig. 10.7, the best design's gait, Fig. 10.4); or
+                     point feet, Fig. 10.7, the best design's gait, Fig. 10.4); sensitivity
+                     (a sensitivity job: Delta f_mech over the relative change of each
+                     parameter, continuation and KKT tangent, Fig. 10.1); or
                      giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
   report JOB [--out FILE.html]
@@ -116,11 +126,12 @@ struct Options {
   std::string command;
   std::vector<std::string> positional;
   std::string lcm_url, key_file, db, spec_file, foot, sweep, values, speeds, task = "sweep", name, request_id, state, out,
-      what = "solutions", result, feet, reference, trials, densities;
+      what = "solutions", result, feet, reference, trials, densities, parameters;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
-  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan("");
-  int point_delay_ms = -1, starts = -1, sweep_starts = -1;
+  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan(""),
+         relative_range = std::nan("");
+  int point_delay_ms = -1, starts = -1, sweep_starts = -1, steps = -1;
   bool watch = false;
   cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
 };
@@ -150,7 +161,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 // Every option parse_args() knows, for "did you mean" on a misspelled one.
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
-    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--parameters", "--relative-range", "--steps", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
     "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
@@ -186,6 +197,9 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--design-speed") o.design_speed = number(next());
     else if (a == "--starts") o.starts = static_cast<int>(number(next()));
     else if (a == "--sweep-starts") o.sweep_starts = static_cast<int>(number(next()));
+    else if (a == "--parameters") o.parameters = next();
+    else if (a == "--relative-range") o.relative_range = number(next());
+    else if (a == "--steps") o.steps = static_cast<int>(number(next()));
     else if (a == "--name") o.name = next();
     else if (a == "--point-delay-ms") o.point_delay_ms = static_cast<int>(number(next()));
     else if (a == "--request-id") o.request_id = next();
@@ -293,6 +307,22 @@ std::string foot_design_spec_text(const Options& o) {
   return spec.dump();
 }
 
+// sensitivity from flags: --foot, --speed, --parameters (comma-separated), --relative-range,
+// --steps; the rest defaults (service/walker_sensitivity_kind.hpp).
+std::string sensitivity_spec_text(const Options& o) {
+  if (o.foot.empty() || !std::isfinite(o.speed)) throw UsageError("submit --task sensitivity needs --foot and --speed V");
+  nlohmann::json spec = {{"scene", "walker"}, {"task", "sensitivity"}, {"foot", foot_argument("--foot", o.foot)}, {"speed", o.speed}};
+  if (!o.parameters.empty()) {
+    spec["parameters"] = nlohmann::json::array();
+    std::stringstream ss(o.parameters);
+    for (std::string name; std::getline(ss, name, ',');) spec["parameters"].push_back(name);
+  }
+  if (std::isfinite(o.relative_range)) spec["relative_range"] = o.relative_range;
+  if (o.steps >= 0) spec["steps"] = o.steps;
+  if (!o.name.empty()) spec["name"] = o.name;
+  return spec.dump();
+}
+
 // The spec text of `submit`: the file's, or a foot_sweep / walker job / foot_comparison /
 // foot_fit / foot_design from flags.
 std::string spec_text(const Options& o) {
@@ -307,6 +337,9 @@ std::string spec_text(const Options& o) {
   if (o.task == "foot_comparison") return foot_comparison_spec_text(o);
   if (o.task == "foot_fit") return foot_fit_spec_text(o);
   if (o.task == "foot_design") return foot_design_spec_text(o);
+  if (o.task == "sensitivity") return sensitivity_spec_text(o);
+  if (!o.parameters.empty() || std::isfinite(o.relative_range) || o.steps >= 0)
+    throw UsageError("--parameters, --relative-range and --steps need --task sensitivity");
   if (!o.densities.empty() || std::isfinite(o.design_speed) || o.sweep_starts > 0)
     throw UsageError("--densities, --design-speed and --sweep-starts need --task foot_design");
   if (!o.trials.empty()) throw UsageError("--trials needs --task foot_fit");
@@ -523,11 +556,12 @@ int plot(Session& s, const Options& o) {
                                                                         nlohmann::json::parse(read_file(o.result)));
     const cyclopt::plot::RenderOptions size = cyclopt::plot::fitted_options(scene, 800);
     figures.push_back({"giant_swing_stroboscope", "Giant swing stroboscope (seed 000 Fig. 5.5)", std::move(scene), size});
-  } else if (kind == "foot-fit" || kind == "foot-design" || kind == "foot-comparison") {
+  } else if (kind == "foot-fit" || kind == "foot-design" || kind == "foot-comparison" || kind == "sensitivity") {
     if (o.jobs.size() + o.from.size() != 1) throw UsageError("plot " + kind + " needs one --job JOB or --from FILE.json");
     const nlohmann::json doc = o.jobs.empty() ? nlohmann::json::parse(read_file(o.from.front())) : job_document(s, o.jobs.front());
     if (kind == "foot-fit") figures = cyclopt::plot::foot_fit_job_figures(doc, &not_drawn);
     else if (kind == "foot-design") figures = cyclopt::plot::foot_design_figures(doc, &not_drawn);
+    else if (kind == "sensitivity") figures.push_back(cyclopt::plot::sensitivity_figure(cyclopt::plot::sensitivity_parameters(doc)));
     else figures = cyclopt::plot::foot_comparison_figures(doc);
   } else {
     if (o.jobs.empty() && o.from.empty()) throw UsageError("plot " + kind + " needs --job JOB or --from FILE.json");
@@ -572,16 +606,21 @@ int run(const Options& o) {
   }
   if (o.command == "query") {
     const nlohmann::json rows = s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows;
-    // A foot_design job's table is its designs, one line per density; --wide shows every point.
-    nlohmann::json designs = nlohmann::json::array();
+    // A foot_design job's table is its designs, one line per density, a sensitivity job's its
+    // summaries, one line per parameter; --wide shows every point.
+    nlohmann::json designs = nlohmann::json::array(), summaries = nlohmann::json::array();
     if (o.what == "solutions" && o.format == cyclopt::client::RowFormat::table)
-      for (const nlohmann::json& row : rows)
-        if (cyclopt::records::is_designed_foot(row.value("values", nlohmann::json()))) designs.push_back(row);
-    if (!designs.empty()) {
-      cyclopt::client::print_rows(std::cout, designs, o.format);
-      std::fprintf(stderr, "cyclopt: %zu densities of %zu stored points (--wide: every point)\n", designs.size(), rows.size());
-      return kOk;
-    }
+      for (const nlohmann::json& row : rows) {
+        const nlohmann::json values = row.value("values", nlohmann::json());
+        if (cyclopt::records::is_designed_foot(values)) designs.push_back(row);
+        if (cyclopt::records::is_sensitivity_summary(values)) summaries.push_back(row);
+      }
+    for (const auto& [selected, what] : {std::pair{&designs, "densities"}, std::pair{&summaries, "parameters"}})
+      if (!selected->empty()) {
+        cyclopt::client::print_rows(std::cout, *selected, o.format);
+        std::fprintf(stderr, "cyclopt: %zu %s of %zu stored points (--wide: every point)\n", selected->size(), what, rows.size());
+        return kOk;
+      }
     cyclopt::client::print_rows(std::cout, rows, o.format);
     return kOk;
   }

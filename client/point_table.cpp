@@ -3,6 +3,7 @@
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
 
 #include <cmath>
 
@@ -64,12 +65,35 @@ std::optional<nlohmann::ordered_json> design_summary(const nlohmann::json& row, 
   return s;
 }
 
+// A sensitivity job's parameter (service/walker_sensitivity_kind.hpp): the KKT derivative, its
+// linear prediction of Delta f at both ends of the range, the continuation's, and the verdict.
+std::optional<nlohmann::ordered_json> sensitivity_summary(const nlohmann::json& values) {
+  records::SensitivitySummaryRecord r;
+  try {
+    r = values.get<records::SensitivitySummaryRecord>();
+  } catch (const records::RecordError&) {
+    return std::nullopt;
+  }
+  nlohmann::ordered_json s;
+  s["parameter"] = r.parameter;
+  s["value"] = number(r.value);
+  s["kkt_df_dp"] = number(r.derivative);
+  s["relative"] = number(r.relative);
+  s["predicted_minus"] = number(r.predicted_decrease);
+  s["predicted_plus"] = number(r.predicted_increase);
+  s["continuation_minus"] = number(r.continuation_decrease);
+  s["continuation_plus"] = number(r.continuation_increase);
+  s["verdict"] = r.verdict;
+  return s;
+}
+
 }  // namespace
 
 std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   const nlohmann::json values = member(row, "values");
   if (records::is_foot_fit(values)) return fit_summary(row, values);
   if (records::is_designed_foot(values)) return design_summary(row, values);
+  if (records::is_sensitivity_summary(values)) return sensitivity_summary(values);
   const nlohmann::json gait_json = member(values, "gait");
   if (!gait_json.is_object()) return std::nullopt;
   records::GaitRecord gait;

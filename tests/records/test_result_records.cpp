@@ -4,6 +4,7 @@
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/records/solver_record.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
 
 #include <gtest/gtest.h>
@@ -117,6 +118,66 @@ TEST(ResultRecords, WalkerPointRecordRoundTrips) {
   nlohmann::json with_extras = p;
   with_extras["found_by"] = "multistart at 1.3 m/s";
   EXPECT_EQ(with_extras.get<WalkerPointRecord>(), p);
+}
+
+// Issue 15 item 6: the KKT sensitivities stored with an optimum, and a sensitivity job's points.
+TEST(ResultRecords, SensitivityRecordsRoundTrip) {
+  ParameterSensitivityRecord p{.name = "l_HM", .value = 0.25, .derivative = -0.0185, .relative = -0.09, .kink = true,
+                               .decrease = {.relative_change = 4.6e-3, .constraint = "swing clearance (5.104e)[110]", .enters = true},
+                               .increase = {},  // none predicted: infinity, stored as null
+                               .weakly_active = {"friction (5.104d)[64]"}};
+  KktSensitivitiesRecord k;
+  k.multipliers = "Ipopt polish";
+  k.objective = 0.05;
+  k.lagrangian_gradient = 3e-11;
+  k.active_constraints = 4;
+  k.unique_multipliers = false;
+  k.weakly_active = {"friction (5.104d)[64]"};
+  k.parameters = {p};
+  k.seconds = 0.5;
+  const KktSensitivitiesRecord back = round_trip(k);
+  EXPECT_EQ(back, k);
+  EXPECT_TRUE(std::isinf(back.parameters[0].increase.relative_change));
+  KktSensitivitiesRecord unavailable;  // every number set: NaN != NaN (NanIsStoredAsNull... checks those)
+  unavailable.objective = 0.05;
+  unavailable.lagrangian_gradient = 1e-2;
+  unavailable.seconds = 0.1;
+  unavailable.unavailable = "multipliers unusable: |grad_z L|_inf = 1.0e-02 > 1.0e-04";
+  EXPECT_EQ(round_trip(unavailable), unavailable);
+  WalkerPointRecord w;
+  w.gait = gait();
+  w.sensitivities = k;
+  EXPECT_EQ(round_trip(w), w);
+  const SensitivityStepRecord step{.parameter = "m_T", .value = 48.3, .relative_change = -0.05, .delta_objective = 6e-4, .curve_id = 1};
+  EXPECT_EQ(round_trip(step), step);
+  SensitivitySummaryRecord s;
+  s.parameter = "m_T";
+  s.value = 50.88;
+  s.derivative = -2.3e-4;
+  s.relative = -0.3;
+  s.relative_range = 0.1;
+  s.predicted_decrease = 1.2e-3;
+  s.predicted_increase = -1.2e-3;
+  s.continuation_decrease = 1.25e-3;
+  s.continuation_increase = -1.1e-3;
+  s.reached_decrease = -0.1;
+  s.reached_increase = 0.1;
+  s.quotient_decrease = -2.4e-4;
+  s.quotient_increase = -2.29e-4;
+  s.jumps = 1;
+  s.verdict = "kink: the continuation jumped to another solution curve 1 time(s)";
+  EXPECT_EQ(round_trip(s), s);
+  EXPECT_TRUE(is_sensitivity_summary(nlohmann::json(s)));
+  EXPECT_FALSE(is_sensitivity_summary(nlohmann::json(step)));
+  EXPECT_TRUE(is_sensitivity_step(nlohmann::json(step)));
+  nlohmann::json broken = s;
+  broken.erase("verdict");
+  try {
+    (void)broken.get<SensitivitySummaryRecord>();
+    ADD_FAILURE() << "a summary without its verdict was read";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("verdict"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ResultRecords, FootComparisonRecordsRoundTrip) {

@@ -93,6 +93,7 @@ TEST(ResolvedSpec, TheResolvedSpecOfAWalkerJobIsTheSameJob) {
        {"continuation", {{"parameter", "l_HM"}, {"values", "0.1:0.05:0.2"}}}},
       {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", {0.5, 1.0}},
        {"multistart", {{"seed", 9}}}, {"continuation", {{"seed_speeds", 1.0}}}},
+      {{"scene", "walker"}, {"task", "sensitivity"}, {"foot", "point"}, {"speed", 1.0}, {"steps", 2}},
   };
   for (const nlohmann::json& spec : specs) {
     const nlohmann::json first = resolved_fixed_point(spec);

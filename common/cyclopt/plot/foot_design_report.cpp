@@ -2,6 +2,7 @@
 
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/plot/foot_design_figures.hpp"
+#include "cyclopt/plot/sensitivity_figures.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -94,7 +95,17 @@ Report foot_design_report(const nlohmann::json& doc) {
   std::vector<std::string> not_drawn;
   for (const Figure& f : foot_design_figures(c, &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
-  report.sections = {spec, designs, figures};
+  report.sections = {spec, designs};
+  for (const DesignedDensity& d : c.densities) {
+    if (!d.record.sensitivities) continue;
+    ReportSection k;
+    k.heading = "KKT sensitivities of the design at rho " + report_number(d.record.density, "%g") + " kg/m^2";
+    k.text = kkt_sensitivity_text(*d.record.sensitivities) +
+             " The foot parameters are free in the design, so only the fixed parameters appear.";
+    if (!d.record.sensitivities->unavailable) k.tables.push_back(kkt_sensitivity_table(*d.record.sensitivities));
+    report.sections.push_back(k);
+  }
+  report.sections.push_back(figures);
   return report;
 }
 

@@ -1,6 +1,7 @@
 #include "cyclopt/plot/walker_job_report.hpp"
 
 #include "cyclopt/plot/gait_animation.hpp"
+#include "cyclopt/plot/sensitivity_figures.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 
 #include <cmath>
@@ -66,7 +67,36 @@ Report walker_job_report(const nlohmann::json& doc) {
                                         report_number(p.gait.step_period, "%.3f") + " s",
                                     gait_animation_svg(r, p)});
   if (animations.figures.empty()) animations.text = "No converged gait with a stored trajectory to animate.";
-  report.sections = {spec, results, figures, animations};
+  report.sections = {spec, results};
+  for (const GaitPoint& p : r.points) {
+    if (!p.sensitivities) continue;
+    ReportSection k;
+    k.heading = "KKT sensitivities of the optimum at v = " + report_number(p.speed, "%.3g") + " m/s";
+    k.text = kkt_sensitivity_text(*p.sensitivities);
+    if (!p.sensitivities->unavailable) k.tables.push_back(kkt_sensitivity_table(*p.sensitivities));
+    report.sections.push_back(k);
+  }
+  if (doc.value("task", std::string()) == "sensitivity") {
+    const std::vector<SensitivityParameter> parameters = sensitivity_parameters(doc);
+    ReportSection c;
+    c.heading = "KKT sensitivity against the continuation (seed 001 section 10.1)";
+    c.text = "Per parameter: the KKT derivative's linear prediction of Delta f at the ends of the range beside the change "
+             "the continuation from the optimum measured there (QPSQP, the same objective). 'agrees': both sides reached "
+             "the range, the active set is predicted not to change within it, and the continuation's one-sided difference "
+             "quotients at its first step bracket the KKT derivative. 'kink: ...' names what breaks the linear picture "
+             "(the active set changes, as l_MT at 2 % in the seed's Fig. 10.1; the prediction is then only a tangent), "
+             "'continuation stopped: ...' why a side did not reach the range (Delta f then at the furthest value reached).";
+    c.tables.push_back(sensitivity_comparison_table(parameters));
+    try {
+      const Figure f = sensitivity_figure(parameters);
+      c.figures.push_back({f.caption, svg_of(f)});
+    } catch (const std::invalid_argument& e) {
+      c.text += std::string(" Not drawn: ") + e.what() + ".";
+    }
+    report.sections.push_back(c);
+  }
+  report.sections.push_back(figures);
+  report.sections.push_back(animations);
   return report;
 }
 

@@ -38,6 +38,7 @@ std::vector<GaitPoint> gait_points(const nlohmann::json& doc, int curve) {
     const auto values = s.at("values").get<records::WalkerPointRecord>();
     if (values.gait) p.gait = *values.gait;
     p.converged = records::solved(values);
+    p.sensitivities = values.sensitivities;
     const auto t = trajectories.find(s.value("point", 0));
     if (t != trajectories.end()) p.trajectory = t->second->get<records::GaitTrajectoryRecord>();
     points.push_back(std::move(p));

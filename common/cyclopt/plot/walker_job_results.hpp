@@ -5,6 +5,7 @@
 // are read through the result contract (records/), so the figures see typed fields only.
 
 #include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,7 @@ struct GaitPoint {
   bool converged = false;        // a real gait and, if optimised, a successful solve
   records::GaitRecord gait;      // values.gait (not real when the point has none)
   std::optional<records::GaitTrajectoryRecord> trajectory;  // none when none was stored
+  std::optional<records::KktSensitivitiesRecord> sensitivities;  // values.sensitivities of an optimum
 };
 
 struct WalkerJobResults {

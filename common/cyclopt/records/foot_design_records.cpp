@@ -4,17 +4,6 @@ namespace cyclopt::records {
 
 namespace {
 
-std::vector<std::string> texts(const nlohmann::json& j, const std::string& record, const std::string& key) {
-  const nlohmann::json& v = member(j, record, key);
-  std::vector<std::string> out;
-  if (!v.is_array()) throw RecordError(record + "." + key + ": must be an array of strings, got " + v.dump());
-  for (const nlohmann::json& s : v) {
-    if (!s.is_string()) throw RecordError(record + "." + key + ": must be an array of strings, got " + v.dump());
-    out.push_back(s.get<std::string>());
-  }
-  return out;
-}
-
 std::vector<int> integers(const nlohmann::json& j, const std::string& record, const std::string& key) {
   std::vector<int> out;
   for (double x : numbers(j, record, key)) out.push_back(static_cast<int>(x));
@@ -101,6 +90,7 @@ void to_json(nlohmann::json& j, const DesignedFootRecord& d) {
                     {"sweeps", finite_or_null(d.sweep_seconds)},
                     {"total", finite_or_null(d.seconds)}}}};
   if (d.reason) j["reason"] = *d.reason;
+  if (d.sensitivities) j["sensitivities"] = *d.sensitivities;
 }
 
 void from_json(const nlohmann::json& j, DesignedFootRecord& d) {
@@ -137,6 +127,7 @@ void from_json(const nlohmann::json& j, DesignedFootRecord& d) {
   d.continuation_seconds = number(seconds, r + ".seconds", "continuation");
   d.sweep_seconds = number(seconds, r + ".seconds", "sweeps");
   d.seconds = number(seconds, r + ".seconds", "total");
+  if (j.contains("sensitivities")) d.sensitivities = j["sensitivities"].get<KktSensitivitiesRecord>();
 }
 
 }  // namespace cyclopt::records

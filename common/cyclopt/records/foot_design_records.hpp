@@ -8,6 +8,7 @@
 // 6 + 4k: ComparedSpeedRecord).
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,9 @@ struct DesignedFootRecord {
   int low_speeds_reached = 0;
   double low_mean_f_mech = kUnset, low_saving_vs_start = kUnset, low_saving_vs_point = kUnset;
   double multistart_seconds = kUnset, continuation_seconds = kUnset, sweep_seconds = kUnset, seconds = kUnset;
+  // The KKT sensitivities of the design's optimum (foot parameters free, so their own derivatives
+  // are those of the design bounds); absent when its solve did not converge.
+  std::optional<KktSensitivitiesRecord> sensitivities;
   bool operator==(const DesignedFootRecord&) const = default;
 };
 

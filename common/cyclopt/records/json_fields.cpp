@@ -57,6 +57,17 @@ std::vector<double> numbers(const nlohmann::json& j, const std::string& record, 
   return out;
 }
 
+std::vector<std::string> texts(const nlohmann::json& j, const std::string& record, const std::string& key) {
+  const nlohmann::json& v = member(j, record, key);
+  std::vector<std::string> out;
+  if (!v.is_array()) fail(record, key, "must be an array of strings, got " + v.dump());
+  for (const nlohmann::json& s : v) {
+    if (!s.is_string()) fail(record, key, "must be an array of strings, got " + v.dump());
+    out.push_back(s.get<std::string>());
+  }
+  return out;
+}
+
 std::vector<std::vector<double>> rows(const nlohmann::json& j, const std::string& record, const std::string& key) {
   const nlohmann::json& v = member(j, record, key);
   if (!v.is_array()) fail(record, key, "must be an array of rows, got " + std::string(v.type_name()));

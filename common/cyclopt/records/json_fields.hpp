@@ -28,6 +28,7 @@ int integer(const nlohmann::json& j, const std::string& record, const std::strin
 bool boolean(const nlohmann::json& j, const std::string& record, const std::string& key);
 std::string text(const nlohmann::json& j, const std::string& record, const std::string& key);
 std::vector<double> numbers(const nlohmann::json& j, const std::string& record, const std::string& key);
+std::vector<std::string> texts(const nlohmann::json& j, const std::string& record, const std::string& key);
 std::vector<std::vector<double>> rows(const nlohmann::json& j, const std::string& record, const std::string& key);
 
 // nullopt when `key` is absent (or null); else as above.

@@ -25,6 +25,7 @@ void to_json(nlohmann::json& j, const WalkerPointRecord& p) {
     j["point_seconds"] = c->point_seconds;
   }
   if (!p.x.empty()) j["x"] = p.x;
+  if (p.sensitivities) j["sensitivities"] = *p.sensitivities;
 }
 
 void from_json(const nlohmann::json& j, WalkerPointRecord& p) {
@@ -48,6 +49,7 @@ void from_json(const nlohmann::json& j, WalkerPointRecord& p) {
     p.continuation = c;
   }
   if (j.contains("x")) p.x = numbers(j, r, "x");
+  if (j.contains("sensitivities")) p.sensitivities = j["sensitivities"].get<KktSensitivitiesRecord>();
 }
 
 }  // namespace cyclopt::records

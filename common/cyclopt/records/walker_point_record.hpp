@@ -5,6 +5,7 @@
 // these (a sweep's found_by, a multistart's reached_by_starts); from_json ignores them.
 
 #include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
 #include "cyclopt/records/solver_record.hpp"
 
 #include <nlohmann/json.hpp>
@@ -33,6 +34,7 @@ struct WalkerPointRecord {
   std::optional<double> start_objective;      // the objective there
   std::optional<ContinuationStepRecord> continuation;
   std::vector<double> x;                      // the NLP variables (empty: not stored)
+  std::optional<KktSensitivitiesRecord> sensitivities;  // of a converged optimum (optimise, sensitivity jobs)
   bool operator==(const WalkerPointRecord&) const = default;
 };
 

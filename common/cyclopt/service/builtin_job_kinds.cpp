@@ -7,6 +7,7 @@
 #include "cyclopt/service/giant_swing_job_kind.hpp"
 #include "cyclopt/service/walker_continuation_kinds.hpp"
 #include "cyclopt/service/walker_job_kinds.hpp"
+#include "cyclopt/service/walker_sensitivity_kind.hpp"
 
 namespace cyclopt::service {
 
@@ -18,6 +19,7 @@ JobKindRegistry builtin_job_kinds() {
   registry.add(walker_multistart_kind());
   registry.add(walker_continuation_kind());
   registry.add(walker_sweep_kind());
+  registry.add(walker_sensitivity_kind());
   registry.add(foot_comparison_kind());
   registry.add(foot_design_kind());
   registry.add(foot_fit_kind());

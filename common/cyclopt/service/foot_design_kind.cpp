@@ -5,6 +5,7 @@
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/service/foot_sweep_checkpoint.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
+#include "cyclopt/service/optimum_sensitivities.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/sweep_checkpoints.hpp"
@@ -257,6 +258,10 @@ records::DesignedFootRecord DesignUnit::design_record(const studies::DensityDesi
   r.design_objective = best.objective;
   r.design = designed_foot(walker::GaitProblem(d.model, d.problem).model_at(best.z));
   r.active_bounds = best.active_bounds;
+  walker::GaitOptimum at;
+  at.summary = best.summary;
+  at.z = best.z;
+  r.sensitivities = optimum_sensitivities(d.model, d.problem, at, {}, stop_predicate(ctx_));
   r.free_foot_speeds = static_cast<int>(std::count_if(d.free_foot_f_mech.begin(), d.free_foot_f_mech.end(),
                                                       [](double f) { return std::isfinite(f); }));
   r.low_speed = d.low_speed;

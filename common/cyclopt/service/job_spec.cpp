@@ -77,7 +77,7 @@ const std::vector<std::string>& known_scenes() {
 }
 const std::vector<std::string>& known_tasks() {
   static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart",  "continuation",
-                                            "sweep",      "foot_sweep",      "foot_comparison", "foot_design",
+                                            "sweep",      "sensitivity",     "foot_sweep",      "foot_comparison", "foot_design",
                                             "foot_fit",   "giant_swing"};
   return v;
 }

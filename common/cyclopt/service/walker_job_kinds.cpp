@@ -1,6 +1,7 @@
 #include "cyclopt/service/walker_job_kinds.hpp"
 
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/service/optimum_sensitivities.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_json.hpp"
 #include "cyclopt/service/solver_progress.hpp"
@@ -52,7 +53,9 @@ void run_optimise(const WalkerJob& job, JobContext& ctx) {
   solver.should_stop = stop_predicate(ctx);
   const GaitOptimum opt = walker::optimise_gait(job.model(), problem_at(job, v), solver, job.start);
   if (ctx.stop_reason() != StopReason::none) return;
-  ctx.store_point(point_of(opt, {0, 0}, v));
+  ctx.report_progress({.parameter = v, .curve_id = 0, .points_done = 0, .points_total = 1,
+                       .message = "KKT sensitivities at v = " + std::to_string(v) + " m/s"});
+  ctx.store_point(point_of(opt, {0, 0}, v, optimum_sensitivities(job.model(), problem_at(job, v), opt, {}, stop_predicate(ctx))));
 }
 
 void run_multistart(const WalkerJob& job, JobContext& ctx) {

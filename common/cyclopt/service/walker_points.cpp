@@ -56,8 +56,11 @@ storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, const 
   return stored_point(gait, v, key, parameter);
 }
 
-storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter) {
-  return optimum_point(opt, optimum_values(opt), key, parameter);
+storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter,
+                                std::optional<records::KktSensitivitiesRecord> sensitivities) {
+  records::WalkerPointRecord v = optimum_values(opt);
+  v.sensitivities = std::move(sensitivities);
+  return optimum_point(opt, v, key, parameter);
 }
 
 storage::SolutionPoint point_of(const continuation::ParametricProblem& family, const continuation::CurvePoint& c,

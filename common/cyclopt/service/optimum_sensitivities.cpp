@@ -1,0 +1,76 @@
+#include "cyclopt/service/optimum_sensitivities.hpp"
+
+#include "cyclopt/nlp/solve.hpp"
+#include "cyclopt/studies/kkt_sensitivity.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace cyclopt::service {
+namespace {
+
+std::string scientific(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1e", x);
+  return b;
+}
+
+records::ActiveSetChangeRecord change_record(const studies::ActiveSetChange& c) {
+  return {.relative_change = c.relative_change, .constraint = c.constraint, .enters = c.enters};
+}
+
+}  // namespace
+
+std::optional<records::KktSensitivitiesRecord> optimum_sensitivities(const walker::WalkerModel<double>& model,
+                                                                     const walker::GaitProblemOptions& problem,
+                                                                     const walker::GaitOptimum& opt,
+                                                                     const std::vector<std::string>& parameters,
+                                                                     const std::function<bool()>& should_stop) {
+  if (opt.summary.termination != nlp::Termination::converged) return std::nullopt;
+  nlp::SolverOptions polish;
+  polish.solver = nlp::SolverKind::ipopt;
+  polish.optimality_tolerance = polish.constraint_tolerance = 1e-11;
+  polish.max_iterations = 200;
+  polish.ipopt.difference_hessian_start = true;
+  polish.ipopt.warm_start = nlp::IpoptWarmStart{opt.summary.equality_multipliers, opt.summary.inequality_multipliers,
+                                                opt.summary.bound_multipliers};
+  polish.should_stop = should_stop;
+  walker::GaitProblem gait_problem(model, problem);
+  const nlp::SolverSummary polished = nlp::solve(gait_problem, polish, opt.z);
+  const bool use_polish = polished.termination == nlp::Termination::converged;
+  const nlp::SolverSummary& at = use_polish ? polished : opt.summary;
+  records::KktSensitivitiesRecord r;
+  r.multipliers = use_polish ? "Ipopt polish of the optimum to 1e-11 (" + std::to_string(polished.iterations) +
+                                   " iterations, f changed by " + scientific(polished.objective - opt.summary.objective) + ")"
+                             : "the solve's own (the Ipopt polish ended " + std::string(nlp::to_string(polished.termination)) + ")";
+  try {
+    studies::KktSensitivityOptions o;
+    o.parameters = parameters;
+    const studies::KktSensitivity k = studies::kkt_sensitivity(model, problem, at.x, at, o);
+    r.objective = k.objective;
+    r.lagrangian_gradient = k.lagrangian_gradient;
+    r.seconds = k.seconds + polished.wall_seconds;
+    if (!(k.lagrangian_gradient <= kMaxLagrangianGradient)) {
+      r.unavailable = "multipliers unusable: |grad_z L|_inf = " + scientific(k.lagrangian_gradient) + " > " +
+                      scientific(kMaxLagrangianGradient);
+      return r;
+    }
+    r.active_constraints = k.active_constraints;
+    r.unique_multipliers = k.unique_multipliers;
+    r.weakly_active = k.weakly_active;
+    for (const studies::ParameterSensitivity& p : k.parameters)
+      r.parameters.push_back({.name = p.name,
+                              .value = p.value,
+                              .derivative = p.derivative,
+                              .relative = p.relative,
+                              .kink = p.kink,
+                              .decrease = change_record(p.decrease),
+                              .increase = change_record(p.increase),
+                              .weakly_active = p.weakly_active});
+  } catch (const std::invalid_argument& e) {
+    r.unavailable = std::string("no KKT sensitivities: ") + e.what();
+  }
+  return r;
+}
+
+}  // namespace cyclopt::service
