@@ -202,6 +202,30 @@ class Unit {
   int next_event_ = 0;
 };
 
+// Starts the units and polls them until each has ended. When one fails for good, the others
+// are stopped and its failure is rethrown (the failed one has already left the queue).
+void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64_t job_id) {
+  std::vector<bool> ended(units.size(), false);
+  std::size_t at = 0;  // the unit being started or polled
+  try {
+    for (at = 0; at < units.size(); ++at) ended[at] = units[at]->start();
+    while (std::find(ended.begin(), ended.end(), false) != ended.end()) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(poll_seconds));
+      for (at = 0; at < units.size(); ++at)
+        if (!ended[at]) ended[at] = units[at]->poll();
+    }
+  } catch (...) {
+    ended[at] = true;
+    for (std::size_t i = 0; i < units.size(); ++i)
+      if (!ended[i]) try {
+          units[i]->stop_unit();
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "cycloptd: job %lld: could not stop a unit: %s\n", static_cast<long long>(job_id), e.what());
+        }
+    throw;
+  }
+}
+
 }  // namespace
 
 SlurmExecutor::SlurmExecutor(SlurmOptions options) : options_(std::move(options)) {
@@ -217,36 +241,20 @@ SlurmExecutor::SlurmExecutor(SlurmOptions options) : options_(std::move(options)
 void SlurmExecutor::run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const {
   if (spec.kind->run_unit) return spec.run(ctx);  // the job runs here; its units come back through run_units
   Unit unit(options_, job, ctx);
-  if (unit.start()) return;
-  do std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
-  while (!unit.poll());
+  run_to_end({&unit}, options_.poll_seconds, job.id);
 }
 
 void SlurmExecutor::run_units(const storage::JobRecord& job, const std::vector<service::WorkUnit>& units,
                               const service::UnitRun&, service::JobContext& ctx) const {
   std::vector<std::unique_ptr<service::UnitJobContext>> views;
   std::vector<std::unique_ptr<Unit>> running;
+  std::vector<Unit*> all;
   for (const service::WorkUnit& u : units) {
     views.push_back(std::make_unique<service::UnitJobContext>(ctx, u));
     running.push_back(std::make_unique<Unit>(options_, job, *views.back(), u));
+    all.push_back(running.back().get());
   }
-  std::vector<bool> ended(units.size(), false);
-  try {
-    for (std::size_t i = 0; i < running.size(); ++i) ended[i] = running[i]->start();
-    while (std::find(ended.begin(), ended.end(), false) != ended.end()) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(options_.poll_seconds));
-      for (std::size_t i = 0; i < running.size(); ++i)
-        if (!ended[i]) ended[i] = running[i]->poll();
-    }
-  } catch (...) {  // one unit failed: the job fails, the others are stopped
-    for (std::size_t i = 0; i < running.size(); ++i)
-      if (!ended[i]) try {
-          running[i]->stop_unit();
-        } catch (const std::exception& e) {
-          std::fprintf(stderr, "cycloptd: job %lld: could not stop a unit: %s\n", static_cast<long long>(job.id), e.what());
-        }
-    throw;
-  }
+  run_to_end(all, options_.poll_seconds, job.id);
 }
 
 }  // namespace cyclopt::server::remote
