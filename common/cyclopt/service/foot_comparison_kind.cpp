@@ -3,7 +3,6 @@
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
-#include "cyclopt/service/foot_sweep_checkpoint.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
@@ -130,22 +129,6 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   ctx.store_checkpoint(kSweptFoot, foot_sweep_to_json(s).dump());
 }
 
-// What each foot's unit left: its sweep summary (std::runtime_error naming the unit if missing).
-std::vector<studies::FootSweepSummary> swept_feet(const ComparisonJob& job, JobContext& ctx) {
-  const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
-  std::vector<studies::FootSweepSummary> swept;
-  for (std::size_t k = 0; k < job.feet.size(); ++k) {
-    const auto it = stored.find(unit_checkpoint_prefix(foot_unit_id(k)) + kSweptFoot);
-    if (it == stored.end()) throw std::runtime_error("work unit " + foot_unit_id(k) + " ended without its sweep result");
-    try {
-      swept.push_back(foot_sweep_from_json(nlohmann::json::parse(it->second)));
-    } catch (const std::exception& e) {
-      throw std::runtime_error("work unit " + foot_unit_id(k) + ": unreadable sweep result (" + e.what() + ")");
-    }
-  }
-  return swept;
-}
-
 void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   const int feet = static_cast<int>(job.feet.size());
   const int speeds = static_cast<int>(job.walker.speeds.size());
@@ -159,7 +142,11 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   for (int k = 0; k < feet; ++k) units.push_back({foot_unit_id(static_cast<std::size_t>(k)), k});
   ctx.run_units(units, [&job](const WorkUnit& unit, JobContext& c) { run_foot(job, unit, c); });
   if (ctx.stop_reason() != StopReason::none) return;
-  const studies::FootComparisonResult r = studies::summarise_feet(job.walker.speeds, swept_feet(job, ctx), 0);
+  const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
+  std::vector<studies::FootSweepSummary> swept;
+  for (const WorkUnit& unit : units)
+    swept.push_back(unit_result(stored, unit, kSweptFoot, [](const nlohmann::json& j) { return foot_sweep_from_json(j); }));
+  const studies::FootComparisonResult r = studies::summarise_feet(job.walker.speeds, std::move(swept), 0);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::map<int, std::vector<storage::SolutionPoint>> best_of;  // curve 1 + k's points, of the feet best somewhere
   for (int i = 0; i < speeds; ++i) {

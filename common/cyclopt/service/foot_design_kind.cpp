@@ -3,7 +3,6 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/service/foot_sweep_checkpoint.hpp"
 #include "cyclopt/service/foot_sweep_points.hpp"
 #include "cyclopt/service/optimum_sensitivities.hpp"
 #include "cyclopt/service/solver_progress.hpp"
@@ -361,15 +360,17 @@ void DesignUnit::run(const WorkUnit& unit) {
   }
 }
 
-// A unit's result checkpoint, parsed (std::runtime_error naming the unit if missing or unreadable).
-nlohmann::json unit_result(const std::map<std::string, std::string>& stored, const WorkUnit& unit) {
-  const auto it = stored.find(unit_checkpoint_prefix(unit.id) + kUnitResult);
-  if (it == stored.end()) throw std::runtime_error("work unit " + unit.id + " ended without its result");
-  try {
-    return nlohmann::json::parse(it->second);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error("work unit " + unit.id + ": unreadable result (" + e.what() + ")");
-  }
+// What a density's unit left: its record (savings not yet known) and its two fixed-foot sweeps.
+struct DensityResult {
+  records::DesignedFootRecord record;
+  studies::DensityDesign sweeps;  // high and low only
+};
+
+DensityResult density_result(const nlohmann::json& j) {
+  DensityResult r{j.at("record").get<records::DesignedFootRecord>(), {}};
+  r.sweeps.high = foot_sweep_from_json(j.at("high"));
+  r.sweeps.low = foot_sweep_from_json(j.at("low"));
+  return r;
 }
 
 void run_design(const DesignJob& job, JobContext& ctx) {
@@ -393,37 +394,29 @@ void run_design(const DesignJob& job, JobContext& ctx) {
   const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
   studies::FootSweepSummary references[2];
   for (const WorkUnit& unit : units) {
-    try {
-      const nlohmann::json result = unit_result(stored, unit);
-      if (unit.index < kFirstDensityUnit) {
-        references[unit.index] = foot_sweep_from_json(result);
-        continue;
-      }
-      studies::DensityDesign d;
-      d.high = foot_sweep_from_json(result.at("high"));
-      d.low = foot_sweep_from_json(result.at("low"));
-      records::DesignedFootRecord r = result.at("record").get<records::DesignedFootRecord>();
-      if (r.admissible) {
-        studies::add_savings(d, job.walker.speeds, references[0], references[1]);
-        r.saving_vs_start = d.saving_vs_start;
-        r.saving_vs_point = d.saving_vs_point;
-        r.low_saving_vs_start = d.low_saving_vs_start;
-        r.low_saving_vs_point = d.low_saving_vs_point;
-      }
-      storage::SolutionPoint p;
-      p.key = {records::kDesignCurve, unit.index - kFirstDensityUnit};
-      p.parameter = r.density;
-      if (r.admissible)
-        p.objective = r.design_objective;
-      else
-        p.status = "no admissible design";
-      p.values = r;
-      ctx.store_point(p);
-    } catch (const std::runtime_error&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw std::runtime_error("work unit " + unit.id + ": unreadable result (" + e.what() + ")");
+    if (unit.index < kFirstDensityUnit) {
+      references[unit.index] =
+          unit_result(stored, unit, kUnitResult, [](const nlohmann::json& j) { return foot_sweep_from_json(j); });
+      continue;
     }
+    DensityResult d = unit_result(stored, unit, kUnitResult, density_result);
+    records::DesignedFootRecord& r = d.record;
+    if (r.admissible) {
+      studies::add_savings(d.sweeps, job.walker.speeds, references[0], references[1]);
+      r.saving_vs_start = d.sweeps.saving_vs_start;
+      r.saving_vs_point = d.sweeps.saving_vs_point;
+      r.low_saving_vs_start = d.sweeps.low_saving_vs_start;
+      r.low_saving_vs_point = d.sweeps.low_saving_vs_point;
+    }
+    storage::SolutionPoint p;
+    p.key = {records::kDesignCurve, unit.index - kFirstDensityUnit};
+    p.parameter = r.density;
+    if (r.admissible)
+      p.objective = r.design_objective;
+    else
+      p.status = "no admissible design";
+    p.values = r;
+    ctx.store_point(p);
   }
 }
 

@@ -10,6 +10,7 @@
 // same decisions as the uninterrupted one. An unreadable checkpoint is treated as absent.
 
 #include "cyclopt/service/job_context.hpp"
+#include "cyclopt/studies/foot_comparison.hpp"
 #include "cyclopt/studies/sweep_journal.hpp"
 
 #include <nlohmann/json.hpp>
@@ -21,9 +22,15 @@ studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix =
 
 nlohmann::json summary_to_json(const nlp::SolverSummary& s);
 nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
-nlohmann::json curve_point_to_json(const continuation::CurvePoint& p);
-continuation::CurvePoint curve_point_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
 nlohmann::json run_to_json(const continuation::ContinuationResult& r);
 continuation::ContinuationResult run_from_json(const nlohmann::json& j);
+
+// One foot's finished sweep reduced to its best point per speed (studies::FootSweepSummary): the
+// result a comparison's or a design's work unit leaves for its job (foot_comparison_kind.hpp,
+// foot_design_kind.hpp), read back to combine the units and by a resumed job instead of sweeping
+// the foot again. Mean, saving and common speeds are not kept: summarise_feet computes them.
+nlohmann::json foot_sweep_to_json(const studies::FootSweepSummary& s);
+// Throws (nlohmann::json::exception, std::out_of_range) on a malformed value.
+studies::FootSweepSummary foot_sweep_from_json(const nlohmann::json& j);
 
 }  // namespace cyclopt::service

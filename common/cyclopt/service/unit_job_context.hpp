@@ -7,6 +7,10 @@
 
 #include "cyclopt/service/job_context.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
+
 namespace cyclopt::service {
 
 // "unit/<id>/": the prefix of a unit's checkpoints in its job's.
@@ -37,6 +41,20 @@ class UnitJobContext final : public JobContext {
   JobContext& job_;
   std::string prefix_;
 };
+
+// The checkpoint `key` that `unit` left as its result (among the job's `stored` checkpoints), parsed
+// by parse(json); std::runtime_error naming the unit when it is missing or parse throws.
+template <class Parse>
+auto unit_result(const std::map<std::string, std::string>& stored, const WorkUnit& unit, const std::string& key,
+                 Parse parse) -> decltype(parse(nlohmann::json())) {
+  const auto it = stored.find(unit_checkpoint_prefix(unit.id) + key);
+  if (it == stored.end()) throw std::runtime_error("work unit " + unit.id + " ended without its result '" + key + "'");
+  try {
+    return parse(nlohmann::json::parse(it->second));
+  } catch (const std::exception& e) {
+    throw std::runtime_error("work unit " + unit.id + ": unreadable result '" + key + "' (" + e.what() + ")");
+  }
+}
 
 // JobContext::run_units' default: each unit in turn on this thread, until the job stops.
 void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job);
