@@ -62,7 +62,10 @@ class Sweep {
     po.speed = v;
     return po;
   }
-  nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts);
+  // Local solves at v from `starts`. coarse_first: a batch of perturbed starts, solved at
+  // options.coarse_points first (coarse_to_fine_starts).
+  nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first = false);
+  nlp::MultistartResult solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts);
   std::optional<Eigen::VectorXd> gait_multistart_at(double v, int* solves = nullptr);
   // Opens a curve through the optimum x at v and continues it both ways, unless there is none or it
   // lies on a known curve.
@@ -149,7 +152,21 @@ void Sweep::report() {
   o_.on_progress(progress_);
 }
 
-nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts) {
+nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first) {
+  if (!coarse_first || o_.coarse_points == 0 || o_.coarse_points >= model_.constants.points)
+    return solve_batch(model_, v, std::move(starts));
+  walker::WalkerModel<double> coarse = model_;
+  coarse.constants.points = o_.coarse_points;
+  const nlp::MultistartResult c = solve_batch(coarse, v, starts);
+  std::vector<Eigen::VectorXd> optima;
+  for (const nlp::MultistartOptimum& optimum : c.optima) optima.push_back(optimum.x);
+  // No coarse optimum (a gait that exists at P only, or every coarse solve failed): all starts at P.
+  nlp::MultistartResult fine = solve_batch(model_, v, optima.empty() ? std::move(starts) : std::move(optima));
+  fine.runs.insert(fine.runs.begin(), c.runs.begin(), c.runs.end());  // every solve counts
+  return fine;
+}
+
+nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts) {
   const walker::GaitProblemOptions po = at_speed(v);
   nlp::MultistartOptions mo;
   mo.solver = o_.continuation.corrector;
@@ -175,7 +192,7 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
     report();
   };
   const std::clock_t cpu = std::clock();
-  nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model_, po); },
+  nlp::MultistartResult m = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model, po); },
                                             std::move(starts), mo);
   r_.multistart_solves += n - resumed;
   r_.resumed_solves += resumed;
@@ -201,7 +218,7 @@ std::optional<Eigen::VectorXd> Sweep::gait_multistart_at(double v, int* solves) 
     starts.push_back(shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)));
   }
   if (solves) *solves += o_.starts;
-  return best_optimum(solve_from(v, std::move(starts)));
+  return best_optimum(solve_from(v, std::move(starts), true));
 }
 
 std::optional<Eigen::VectorXd> best_optimum(const nlp::MultistartResult& m) {
@@ -427,7 +444,7 @@ void Sweep::recover(const Target& target) {
       z.head(shape.gait_parameters(z).size()) = walker::perturbed_gait(ev, shape.gait_parameters(z), o_.scale, rng);
       perturbed.push_back(std::move(z));
     }
-    found = take(solve_from(v, std::move(perturbed)), SweepStep::neighbour_multistart);
+    found = take(solve_from(v, std::move(perturbed), true), SweepStep::neighbour_multistart);
   }
   if (!found && target.unreached && !seeded_[target.index]) {
     seeded_[target.index] = true;
@@ -569,6 +586,7 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
   if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
+  if (options.coarse_points < 0) throw std::invalid_argument("coarse_points: must be >= 0 (0: off)");
   const int gait_count = walker::GaitProblem(model, problem).gait_parameter_count();
   for (const KnownGait& known : options.known_gaits) {
     if (std::none_of(options.speeds.begin(), options.speeds.end(), [&](double v) { return same_speed(known.speed, v); }))

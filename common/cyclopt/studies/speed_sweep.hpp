@@ -68,6 +68,12 @@ struct SpeedSweepOptions {
   // failed and the trust region shrinks, instead of spending MaxIter = 2000 iterations per failing
   // try (HMT P2 downwards near 0.46 m/s: ~16000 corrector iterations per run). >= 1.
   int corrector_max_iterations = 300;
+  // Coarse-to-fine multistart (issue 16 item 3): a batch of perturbed starts (step 1, R2, R3) is
+  // solved with P = coarse_points grid points of (5.93) first - the gait parameters (5.92) do not
+  // depend on P, and a Jacobian costs ~P - and every distinct coarse optimum is then polished at
+  // the model's P (all starts at P if no coarse solve converged). Every reported optimum is a KKT
+  // point at the model's P. 0, or >= the model's P: every start at the model's P.
+  int coarse_points = 0;
   std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
   // Called when a phase begins, after every multistart solve and at every converged grid point
