@@ -47,6 +47,10 @@ int main(int argc, char** argv) {
               "WALL %.1f s\n",
               foot_name.c_str(), speed, config.c_str(), n, scale, r.successes, n, r.optima.size(), iterations, times[times.size() / 2],
               total, r.wall_seconds);
+  // Per run: where the time of a multistart goes (the tails: runs that end at MaxIter).
+  for (std::size_t i = 0; i < r.runs.size(); ++i)
+    std::printf("  run %2zu: %-16s %5d iterations %6.2f s  f_mech %.8f\n", i, nlp::to_string(r.runs[i].termination),
+                r.runs[i].iterations, r.runs[i].wall_seconds, r.runs[i].objective);
   for (std::size_t k = 0; k < std::min<std::size_t>(r.optima.size(), 5); ++k)
     std::printf("  optimum %zu: f_mech %.8f reached by %zu starts\n", k + 1, r.optima[k].objective, r.optima[k].starts.size());
 }

@@ -5,7 +5,7 @@
 // none). Issue 5 asks for <= 60 s wall per foot model.
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
-// [trapezoid|corrected]: foot is a preset name or a JSON foot file (bench/feet/); the sweep is stopped at
+// [trapezoid|corrected] [coarse P = 0 (off); SpeedSweepOptions::coarse_points] [qp|trivial predictor]: foot is a preset name or a JSON foot file (bench/feet/); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off.
 #include "bench_foot.hpp"
@@ -40,13 +40,17 @@ int main(int argc, char** argv) {
   for (int i = 0; i <= 20; ++i) o.speeds.push_back(0.3 + 0.1 * i);
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
+  if (argc > 7) o.coarse_points = std::atoi(argv[7]);
+  if (argc > 8) o.continuation.predictor = parse_predictor(argv[8]);
   const SpeedSweepResult r = speed_sweep(model, po, o, [&](const CurvePoint& p) {
     std::printf("  point v %.4f curve %d %s f %.6f (%d corrector iterations, %.2f s)\n", p.parameter, p.curve_id,
                 p.converged ? "ok    " : "FAILED", p.objective, p.corrector.iterations, p.seconds);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < budget;
   });
-  std::printf("\nfoot %s, f_mech, P = %d, %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n", foot_name.c_str(),
-              constants.points, rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
+  std::printf("\nfoot %s, f_mech, P = %d (multistarts at P = %d first), %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n",
+              foot_name.c_str(), constants.points, o.coarse_points > 0 ? o.coarse_points : constants.points,
+              rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
+  std::printf("continuation: %s predictor\n", to_string(o.continuation.predictor));
   // Idle estimate: the multistarts use both cores, the continuation runs one.
   const double cpu = bench::cpu_seconds() - cpu_at_start;
   std::printf("wall time %.1f s (multistart %.1f s for %d solves, recovery %.1f s), %s at the end\n", r.seconds,

@@ -6,7 +6,7 @@
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
 //   options (integer, number or string, recognised in that order); the word difference_hessian
 //   sets SqpOptions::difference_hessian, difference_start IpoptOptions::difference_hessian_start, the word lbfgs Ipopt's limited-memory Hessian instead of the
-//   adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102).
+//   adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102), the word verbose one line per iteration.
 #include "bench_foot.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
       so.ipopt.difference_hessian_start = true;
     else if (std::string(argv[k]) == "lbfgs")
       so.ipopt.hessian = nlp::IpoptHessian::limited_memory;
+    else if (std::string(argv[k]) == "verbose")
+      so.print_level = 1;
     else if (std::string(argv[k]) == "f_usq")
       po.objective = walker::Objective::squared_torque;
     else
