@@ -433,8 +433,11 @@ void Sweep::recover(const Target& target) {
     starts.push_back(p->x);
     curves += (curves.empty() ? "" : ", ") + std::to_string(p->curve_id) + " at " + std::to_string(p->parameter);
   }
-  bool found = !starts.empty() && take(solve_from(v, starts), SweepStep::neighbour_start);
-  if (!found && target.unreached && !starts.empty()) {
+  const nlp::MultistartResult r1 = starts.empty() ? nlp::MultistartResult{} : solve_from(v, starts);
+  bool found = !starts.empty() && take(r1, SweepStep::neighbour_start);
+  // R2 also where the neighbour's optimum leads to no KKT point at v (its curve ends at a fold
+  // before v), so a possibly dominated point is not kept just because R1 could not start there.
+  if (!found && !starts.empty() && (target.unreached || r1.successes == 0)) {
     const walker::GaitProblem shape(model_, at_speed(v));
     const walker::GaitEvaluator ev(model_);
     std::vector<Eigen::VectorXd> perturbed;

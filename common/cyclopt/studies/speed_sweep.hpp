@@ -16,7 +16,8 @@
 //   R1 neighbour start: a solve at the speed from the converged point nearest in speed of each
 //      curve (the dominated test: only from the neighbour's point), jumping over the place where
 //      continuation failed;
-//   R2 neighbour multistart (unreached speeds only): `starts` perturbations of those points;
+//   R2 neighbour multistart (unreached speeds, and dominated tests where R1 found no KKT point at
+//      all): `starts` perturbations of those points;
 //   R3 gait multistart (unreached speeds that were no seed speed): `starts` perturbations of the
 //      automatic starting gait at that speed, as at the seed speeds.
 // A recovered point better than what the speed had opens a new curve, continued with QPSQP in
