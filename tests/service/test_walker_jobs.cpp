@@ -208,6 +208,24 @@ TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {
   EXPECT_EQ(rejection(s).rfind("feet", 0), 0u) << rejection(s);
 }
 
+TEST(WalkerJobSpec, CoarseMultistartGridIsOffOrAUsableGrid) {
+  // continuation.coarse_points: 0 (off) or [25, 20000] like points, for every kind that sweeps.
+  const nlohmann::json sweep = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};
+  const nlohmann::json comparison = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
+  for (const nlohmann::json& good : {sweep, comparison}) {
+    nlohmann::json s = good;
+    for (int points : {0, 25, 100}) {
+      s["continuation"] = {{"coarse_points", points}};
+      EXPECT_EQ(rejection(s), "accepted") << points;
+    }
+    for (int points : {-1, 1, 24, 20001}) {
+      s["continuation"] = {{"coarse_points", points}};
+      EXPECT_EQ(rejection(s).rfind("continuation.coarse_points: ", 0), 0u) << rejection(s);
+      EXPECT_NE(rejection(s).find("20000"), std::string::npos) << rejection(s);
+    }
+  }
+}
+
 TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {
   nlohmann::json s = walker_spec("optimise");
   s["speed"] = 7.0;

@@ -9,19 +9,28 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec) {
   SweepFields f;
   if (!spec.contains("continuation")) return f;
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
-  reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region", "corrector_max_iterations"});
+  reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region", "corrector_max_iterations", "coarse_points"});
   if (c.contains("seed_speeds"))
     f.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
   f.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(f.min_trust_region);
   f.corrector_max_iterations =
       optional_integer(c, "continuation", "corrector_max_iterations", 1, 100000).value_or(f.corrector_max_iterations);
+  f.coarse_points = parse_coarse_points(c, f.coarse_points);
   return f;
+}
+
+int parse_coarse_points(const nlohmann::json& c, int fallback) {
+  const int points = optional_integer(c, "continuation", "coarse_points", 0, 20000).value_or(fallback);
+  if (points > 0 && points < 25)
+    throw SpecError("continuation.coarse_points", "must be 0 (off) or in " + range_text(25, 20000) + ", got " + std::to_string(points));
+  return points;
 }
 
 nlohmann::json sweep_fields_json(const SweepFields& fields) {
   return {{"seed_speeds", fields.seed_speeds},
           {"min_trust_region", fields.min_trust_region},
-          {"corrector_max_iterations", fields.corrector_max_iterations}};
+          {"corrector_max_iterations", fields.corrector_max_iterations},
+          {"coarse_points", fields.coarse_points}};
 }
 
 studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFields& fields, int starts) {
@@ -33,6 +42,7 @@ studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFie
   o.seed_speeds = fields.seed_speeds;
   o.continuation.min_trust_region = fields.min_trust_region;
   o.corrector_max_iterations = fields.corrector_max_iterations;
+  o.coarse_points = fields.coarse_points;
   o.continuation.corrector = walker.solver;
   return o;
 }

@@ -2,10 +2,12 @@
 // The fields of the kinds that run several speed sweeps with the same options (foot_comparison,
 // foot_design): the walker fields (walker_job_spec.hpp) and
 //
-//   "continuation": {"seed_speeds": "0.3:1:2.3", "min_trust_region": 0.002, "corrector_max_iterations": 300}
+//   "continuation": {"seed_speeds": "0.3:1:2.3", "min_trust_region": 0.002, "corrector_max_iterations": 300,
+//                    "coarse_points": 100}
 //
-// the sweeps' multistart speeds (default 0.3, 1.3, 2.3), Delta_min (Table 7.1) and the corrector's
-// MaxIter at each continuation point (studies::SpeedSweepOptions::corrector_max_iterations).
+// the sweeps' multistart speeds (default 0.3, 1.3, 2.3), Delta_min (Table 7.1), the corrector's
+// MaxIter at each continuation point (studies::SpeedSweepOptions::corrector_max_iterations) and the
+// grid of the coarse-to-fine multistarts (SpeedSweepOptions::coarse_points, 0: off).
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
@@ -19,10 +21,14 @@ struct SweepFields {
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};
   double min_trust_region = continuation::ContinuationOptions{}.min_trust_region;
   int corrector_max_iterations = studies::SpeedSweepOptions{}.corrector_max_iterations;
+  int coarse_points = studies::SpeedSweepOptions{}.coarse_points;
 };
 
 // Reads spec["continuation"] when present; throws SpecError naming the field.
 SweepFields parse_sweep_fields(const nlohmann::json& spec);
+// continuation.coarse_points of the "continuation" object c: 0 (off) or a grid of P points in
+// [25, 20000] like "points"; `fallback` when absent. Throws SpecError naming the field.
+int parse_coarse_points(const nlohmann::json& c, int fallback);
 // The "continuation" block with every field (for the resolved spec, resolved_spec.hpp).
 nlohmann::json sweep_fields_json(const SweepFields& fields);
 

@@ -4,6 +4,7 @@
 #include "cyclopt/service/solver_progress.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/sweep_checkpoints.hpp"
+#include "cyclopt/service/sweep_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_cost.hpp"
 #include "cyclopt/service/walker_job_json.hpp"
@@ -30,6 +31,7 @@ struct ContinuationJob {
   std::string parameter = "speed";
   std::vector<double> values;  // p_0, p_1, ...: the speeds, or "continuation.values"
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};
+  int coarse_points = studies::SpeedSweepOptions{}.coarse_points;  // a sweep's multistarts
 };
 
 ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJobFields& common) {
@@ -40,7 +42,8 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   if (!spec.contains("continuation")) return j;
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
   reject_unknown_keys(c, "continuation",
-                      {"predictor", "fixed_step", "min_trust_region", "max_trust_region", "parameter", "values", "seed_speeds"});
+                      {"predictor", "fixed_step", "min_trust_region", "max_trust_region", "parameter", "values", "seed_speeds",
+                       "coarse_points"});
   if (c.contains("predictor"))
     j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", {"qp", "trivial"}));
   j.options.fixed_step = optional_number(c, "continuation", "fixed_step", 0.0, 1e3).value_or(0.0);
@@ -48,6 +51,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   j.options.max_trust_region = optional_number(c, "continuation", "max_trust_region", 0.0, 1e3).value_or(0.0);
   if (c.contains("seed_speeds"))
     j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
+  j.coarse_points = parse_coarse_points(c, j.coarse_points);
   if (c.contains("parameter")) {
     std::vector<std::string> names = walker::model_parameter_names(j.walker.model());
     names.insert(names.begin(), "speed");
@@ -72,7 +76,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
 }
 
 // The resolved spec (resolved_spec.hpp): the walker fields and the whole "continuation" block;
-// seed_speeds and the multistart only for a sweep, which draws random starts at them.
+// seed_speeds, coarse_points and the multistart only for a sweep, which draws random starts at them.
 nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
   nlohmann::json r = walker_job_json(j.walker, true, sweep);
   nlohmann::json c = {{"predictor", continuation::to_string(j.options.predictor)},
@@ -81,7 +85,7 @@ nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
                       {"max_trust_region", j.options.max_trust_region},
                       {"parameter", j.parameter}};
   if (j.parameter != "speed") c["values"] = j.values;
-  if (sweep) c["seed_speeds"] = j.seed_speeds;
+  if (sweep) c["seed_speeds"] = j.seed_speeds, c["coarse_points"] = j.coarse_points;
   r["continuation"] = c;
   return r;
 }
@@ -147,6 +151,7 @@ void run_sweep(const ContinuationJob& job, JobContext& ctx) {
   studies::SpeedSweepOptions so;
   so.speeds = job.values;
   so.seed_speeds = job.seed_speeds;
+  so.coarse_points = job.coarse_points;
   so.starts = job.walker.starts;
   so.seed = job.walker.seed;
   so.scale = job.walker.scale;
