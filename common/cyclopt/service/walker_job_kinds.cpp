@@ -25,6 +25,16 @@ walker::GaitProblemOptions problem_at(const WalkerJob& job, double speed) {
   return o;
 }
 
+// The SQP of an optimise or multistart job starts from W_1 of (6.24) on the difference Hessian,
+// as the sweep's multistarts (speed_sweep.cpp): from the automatic starting gait it converges where
+// W_1 = I stops at MaxIter (P1-barefoot HM at 0.5 m/s, a fitted P1-shoes HMT at 1.3 m/s on AMD EPYC)
+// and needs 2-3x fewer iterations on point feet (bench/results/walker_solvers.txt).
+nlp::SolverOptions distant_start_solver(const WalkerJob& job) {
+  nlp::SolverOptions solver = job.solver;
+  solver.sqp.difference_hessian = true;
+  return solver;
+}
+
 void run_evaluate(const WalkerJob& job, JobContext& ctx) {
   ctx.announce(1);
   ctx.add_curve(0, "gait evaluation", "speed");
@@ -47,7 +57,7 @@ void run_optimise(const WalkerJob& job, JobContext& ctx) {
   ctx.add_curve(0, "optimal gait", "speed");
   if (ctx.already_stored_points().count({0, 0})) return;
   const double v = job.speeds[0];
-  nlp::SolverOptions solver = job.solver;
+  nlp::SolverOptions solver = distant_start_solver(job);
   solver.on_iteration = solver_progress(
       ctx, {.parameter = v, .curve_id = 0, .points_done = 0, .points_total = 1, .message = "v = " + std::to_string(v) + " m/s"});
   solver.should_stop = stop_predicate(ctx);
@@ -72,7 +82,7 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
   nlp::MultistartOptions mo;
   mo.num_starts = job.starts;
   mo.base_seed = job.seed;
-  mo.solver = job.solver;
+  mo.solver = distant_start_solver(job);
   mo.solver.on_iteration = stop_requests(ctx);
   mo.solver.should_stop = stop_predicate(ctx);
   const studies::SweepJournal journal = sweep_journal(ctx);
