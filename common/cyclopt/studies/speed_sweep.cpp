@@ -63,7 +63,7 @@ class Sweep {
     return po;
   }
   // Local solves at v from `starts`. coarse_first: a batch of perturbed starts, solved at
-  // options.coarse_points first (coarse_to_fine_starts).
+  // options.coarse_points first (SpeedSweepOptions::coarse_points).
   nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first = false);
   nlp::MultistartResult solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts);
   std::optional<Eigen::VectorXd> gait_multistart_at(double v, int* solves = nullptr);
