@@ -1,7 +1,7 @@
 #pragma once
 // The SQP/Ipopt configurations the walker benchmarks compare, by name: sqp (seed Table 6.2,
 // W_1 = I then (6.25)), sqp-dh (W_1 from (6.24) on the difference Hessian), ipopt (the adapter's
-// defaults). MaxIter 3000 as the seed's chapter-8 experiments.
+// defaults), sqp-dhK (as sqp-dh, a fresh (6.24) every K iterations). MaxIter 3000 as the seed's chapter-8 experiments.
 #include "cyclopt/nlp/solver_options.hpp"
 
 #include <cstdio>
@@ -16,6 +16,11 @@ inline nlp::SolverOptions solver_configuration(const std::string& name) {
   if (name == "sqp") return o;
   if (name == "sqp-dh") {
     o.sqp.difference_hessian = true;
+    return o;
+  }
+  if (name.rfind("sqp-dh", 0) == 0 && name.size() > 6) {  // sqp-dhK: a fresh (6.24) every K iterations
+    o.sqp.difference_hessian = true;
+    o.sqp.difference_hessian_every = std::atoi(name.c_str() + 6);
     return o;
   }
   if (name == "ipopt") {

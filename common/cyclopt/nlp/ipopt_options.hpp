@@ -39,6 +39,9 @@ struct IpoptOptions {
   // difference_hessian does; without it a start at (or near) a KKT point still needs ~100
   // iterations to rebuild the curvature.
   bool difference_hessian_start = false;
+  // damped_bfgs only, > 0: W is reset to (6.24) of a fresh difference Hessian every this many
+  // Hessian evaluations (n extra Jacobians each), as SqpOptions::difference_hessian_every.
+  int difference_hessian_every = 0;
   int limited_memory_max_history = 6;  // Ipopt's limited_memory_max_history (limited_memory only); >= 1
   // Ipopt's mu_strategy: "monotone" or "adaptive". Adaptive: with the walker's 2003
   // inequalities, monotone mu starting at 0.1 first centres the gait in the inequalities (f rises

@@ -208,11 +208,13 @@ class ProblemTnlp : public Ipopt::TNLP {
       write_lower_triangle(*H, values);
       return true;
     }
-    if (options_.ipopt.difference_hessian_start && !difference_start_done_ && obj_factor > 0.0) {
-      difference_start_done_ = true;
-      if (const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
-              evaluator_, point, iterate_, multipliers.head(m_eq_) / obj_factor, multipliers.tail(m_in_) / obj_factor))
-        bfgs_.reset(obj_factor * clamped_hessian(*H));
+    if (obj_factor > 0.0) {
+      const int k = objective_hessians_++, every = options_.ipopt.difference_hessian_every;
+      const bool refresh = (options_.ipopt.difference_hessian_start && k == 0) || (every > 0 && k > 0 && k % every == 0);
+      if (refresh)
+        if (const std::optional<Eigen::MatrixXd> H = lagrangian_hessian_by_differences(
+                evaluator_, point, iterate_, multipliers.head(m_eq_) / obj_factor, multipliers.tail(m_in_) / obj_factor))
+          bfgs_.reset(obj_factor * clamped_hessian(*H));
     }
     // obj_factor = 0: Ipopt's restoration phase (feasibility problem, constraint curvature only).
     LagrangianBfgs& bfgs = obj_factor > 0.0 ? bfgs_ : restoration_bfgs_;
@@ -234,7 +236,7 @@ class ProblemTnlp : public Ipopt::TNLP {
   CachedEvaluator evaluator_;
   const Index n_, m_eq_, m_in_;
   LagrangianBfgs bfgs_, restoration_bfgs_;
-  bool difference_start_done_ = false;
+  int objective_hessians_ = 0;  // eval_h calls outside the restoration phase
   Eigen::VectorXd iterate_x_;  // the last point of eval_jac_g or eval_h (exact-Hessian modes), and its derivatives
   Evaluation iterate_;
   const Clock::time_point start_;

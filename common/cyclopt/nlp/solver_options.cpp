@@ -52,6 +52,7 @@ void validate(const SolverOptions& o) {
   require(o.ipopt.mu_strategy == "monotone" || o.ipopt.mu_strategy == "adaptive", "ipopt.mu_strategy",
           "\"monotone\" or \"adaptive\"");
   require(!o.ipopt.warm_start || o.ipopt.warm_start->mu_init > 0, "ipopt.warm_start.mu_init", "> 0");
+  require(o.ipopt.difference_hessian_every >= 0, "ipopt.difference_hessian_every", ">= 0 (0: never)");
   const SqpOptions& s = o.sqp;
   require(s.initial_penalty > 0, "sqp.initial_penalty", "> 0");
   require(s.penalty_increase > 1, "sqp.penalty_increase", "> 1");
@@ -69,6 +70,7 @@ void validate(const SolverOptions& o) {
   require(s.max_function_evaluations >= 1, "sqp.max_function_evaluations", ">= 1");
   require(!std::isnan(s.objective_limit), "sqp.objective_limit", "a number (-infinity for no limit)");
   require(s.max_backtracking_steps >= 1, "sqp.max_backtracking_steps", ">= 1");
+  require(s.difference_hessian_every >= 0, "sqp.difference_hessian_every", ">= 0 (0: never)");
 }
 
 SolverOptions seed_table_6_2_options() {

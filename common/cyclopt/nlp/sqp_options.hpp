@@ -41,6 +41,9 @@ struct SqpOptions {
   // W_1 is then its eigenvalue-clamped version (6.24). Empty: W_1 = I and W_2 from (6.25), unless
   // difference_hessian.
   bool difference_hessian = false;  // W_1 from (6.24) on forward differences of the exact gradients (difference_hessian.hpp)
+  // > 0 (with difference_hessian): W_k is replaced by (6.24) on a fresh difference Hessian every
+  // this many iterations instead of the BFGS update (6.22) (not in the seed).
+  int difference_hessian_every = 0;
   std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,
                                 const Eigen::VectorXd& inequality_multipliers)>
       lagrangian_hessian;

@@ -81,6 +81,10 @@ class SqpRun {
   bool evaluates(const VectorXd& x) { return evaluator_.evaluate(project(x), false).ok; }
   std::optional<VectorXd> line_search(const SearchDirection& dir);
   MatrixXd restarted_hessian(const VectorXd& step, const VectorXd& gradient_change);
+  // The forward-difference Hessian of the Lagrangian (6.23) at x_k, if it evaluates.
+  std::optional<MatrixXd> difference_hessian() {
+    return lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
+  }
   ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
   void finish();
 
@@ -268,7 +272,7 @@ void SqpRun::run(const VectorXd& x0) {
   if (sqp_.lagrangian_hessian)
     hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
   else if (sqp_.difference_hessian)
-    hessian = lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
+    hessian = difference_hessian();
   const bool identity_start = !hessian;
   W_ = identity_start ? MatrixXd::Identity(n_, n_) : clamped_hessian(*hessian);  // (6.24)
 
@@ -340,6 +344,8 @@ void SqpRun::run(const VectorXd& x0) {
     current_ = e;
     multipliers_ = std::move(y);
     if (stalled) W_ = restarted_hessian(step, gradient_change);
+    else if (sqp_.difference_hessian && sqp_.difference_hessian_every > 0 && k % sqp_.difference_hessian_every == 0)
+      if (const auto H = difference_hessian()) W_ = clamped_hessian(*H);  // (6.24)
     summary_.iterations = k;
     IterationReport report{k, current_.objective, constraint_violation(current_, x_, lower_, upper_),
                            lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
@@ -365,8 +371,7 @@ MatrixXd SqpRun::restarted_hessian(const VectorXd& step, const VectorXd& gradien
   short_steps_ = 0;
   if (options_.print_level > 0) std::printf("sqp        W restart after %d short steps\n", kStalledIterations);
   if (sqp_.difference_hessian)
-    if (const auto H = lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality))
-      return clamped_hessian(*H);
+    if (const auto H = difference_hessian()) return clamped_hessian(*H);
   return scaled_identity_update(step, gradient_change);
 }
 
