@@ -2,9 +2,11 @@
 // regression guard for the adapter's walker settings (damped-BFGS Hessian, adaptive mu; see
 // bench/results/walker_solvers.txt: with Ipopt's L-BFGS or monotone mu from 0.1 it does not
 // converge), and for the warm start used by the continuation's Ipopt corrector (multipliers and
-// the difference Hessian at the start).
+// the difference Hessian at the start), and for the distant-start settings with which Ipopt
+// reaches a KKT point from the automatic starting gait on a rolling foot.
 #include "reference_gaits.hpp"
 
+#include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 
 #include <gtest/gtest.h>
@@ -55,6 +57,22 @@ TEST(GaitIpopt, WarmStartFromTheNeighbouringOptimumNeedsFewIterations) {
   ASSERT_EQ(warm.summary.termination, nlp::Termination::converged) << warm.summary.message;
   EXPECT_LE(warm.summary.iterations, 15);
   EXPECT_LE(warm.summary.kkt_error, 1e-5);
+}
+
+// From the automatic starting gait on HM feet (f_mech, 1.3 m/s), Ipopt's damped BFGS alone stops
+// at max_iterations (here, P = 100: 600 iterations, KKT error 4e-2; P = 200: walker_solvers.txt);
+// with the refreshed difference Hessian of distant_start_solver it converges (430 iterations).
+TEST(GaitIpopt, ReachesAKktPointFromTheStartingGaitOnAnHmFoot) {
+  const WalkerModel<double> model = testing::reference_model("P1-barefoot-left-HM", 100);
+  const GaitProblemOptions problem{Objective::mechanical, 1.3, Quadrature::trapezoid, {}};
+  nlp::SolverOptions o = ipopt_options();
+  o.max_iterations = 600;
+  const GaitOptimum ipopt = optimise_gait(model, problem, distant_start_solver(o));
+  const nlp::SolverSummary& s = ipopt.summary;
+  ASSERT_EQ(s.termination, nlp::Termination::converged) << s.message << " after " << s.iterations << " iterations";
+  EXPECT_LE(s.kkt_error, 1e-5);
+  EXPECT_LE(s.constraint_violation, 1e-8);
+  EXPECT_LT(s.objective, 0.1 * ipopt.start_objective);  // a walking optimum, not a stationary start
 }
 
 }  // namespace

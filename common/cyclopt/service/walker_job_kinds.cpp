@@ -8,6 +8,7 @@
 #include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/service/walker_points.hpp"
+#include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 
 #include <chrono>
@@ -23,16 +24,6 @@ walker::GaitProblemOptions problem_at(const WalkerJob& job, double speed) {
   walker::GaitProblemOptions o = job.problem;
   o.speed = speed;
   return o;
-}
-
-// The SQP of an optimise or multistart job starts from W_1 of (6.24) on the difference Hessian,
-// as the sweep's multistarts (speed_sweep.cpp): from the automatic starting gait it converges where
-// W_1 = I stops at MaxIter (P1-barefoot HM at 0.5 m/s, a fitted P1-shoes HMT at 1.3 m/s on AMD EPYC)
-// and needs 2-3x fewer iterations on point feet (bench/results/walker_solvers.txt).
-nlp::SolverOptions distant_start_solver(const WalkerJob& job) {
-  nlp::SolverOptions solver = job.solver;
-  solver.sqp.difference_hessian = true;
-  return solver;
 }
 
 void run_evaluate(const WalkerJob& job, JobContext& ctx) {
@@ -57,7 +48,7 @@ void run_optimise(const WalkerJob& job, JobContext& ctx) {
   ctx.add_curve(0, "optimal gait", "speed");
   if (ctx.already_stored_points().count({0, 0})) return;
   const double v = job.speeds[0];
-  nlp::SolverOptions solver = distant_start_solver(job);
+  nlp::SolverOptions solver = walker::distant_start_solver(job.solver);
   solver.on_iteration = solver_progress(
       ctx, {.parameter = v, .curve_id = 0, .points_done = 0, .points_total = 1, .message = "v = " + std::to_string(v) + " m/s"});
   solver.should_stop = stop_predicate(ctx);
@@ -82,7 +73,7 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
   nlp::MultistartOptions mo;
   mo.num_starts = job.starts;
   mo.base_seed = job.seed;
-  mo.solver = distant_start_solver(job);
+  mo.solver = walker::distant_start_solver(job.solver);
   mo.solver.on_iteration = stop_requests(ctx);
   mo.solver.should_stop = stop_predicate(ctx);
   const studies::SweepJournal journal = sweep_journal(ctx);

@@ -3,6 +3,7 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/studies/walker_family.hpp"
+#include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
@@ -132,8 +133,10 @@ DensityDesign DesignStudy::at(double rho) {
   nlp::MultistartOptions mo;
   mo.num_starts = o_.starts;
   mo.base_seed = o_.seed;
-  mo.solver = o_.sweep.continuation.corrector;
-  mo.solver.sqp.difference_hessian = true;  // distant starts: W_1 of (6.24), as in the speed sweep
+  mo.solver = walker::distant_start_solver(o_.sweep.continuation.corrector);
+  // With the foot free the refresh is not measured; it stopped tests/service/test_foot_design_jobs'
+  // design start (P = 50, seed 2) short of the KKT point W_1 alone reaches in 489 of 500 iterations.
+  mo.solver.sqp.difference_hessian_every = mo.solver.ipopt.difference_hessian_every = 0;
   mo.objective_tolerance = o_.objective_tolerance;
   mo.x_tolerance = o_.x_tolerance;
   journal_multistart(mo, journal, 0);

@@ -2,6 +2,7 @@
 
 #include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
@@ -169,10 +170,7 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
 nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts) {
   const walker::GaitProblemOptions po = at_speed(v);
   nlp::MultistartOptions mo;
-  mo.solver = o_.continuation.corrector;
-  // Solves from perturbed or distant starts start from W_1 of (6.24) - the seed's choice, W_1 = I
-  // is only its comparison with fmincon: HM P1 at 1.3 m/s needs ~300 instead of ~1800 iterations.
-  mo.solver.sqp.difference_hessian = true;
+  mo.solver = walker::distant_start_solver(o_.continuation.corrector);
   const int batch = batches_++;
   std::atomic<int> resumed{0};
   journal_multistart(mo, o_.journal, batch, &resumed);

@@ -1,0 +1,15 @@
+#include "cyclopt/walker/distant_start_solver.hpp"
+
+namespace cyclopt::walker {
+
+nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver) {
+  solver.sqp.difference_hessian = true;
+  solver.sqp.difference_hessian_every = kDistantStartHessianRefresh;
+  if (solver.ipopt.hessian == nlp::IpoptHessian::damped_bfgs) {
+    solver.ipopt.difference_hessian_start = true;
+    solver.ipopt.difference_hessian_every = kDistantStartHessianRefresh;
+  }
+  return solver;
+}
+
+}  // namespace cyclopt::walker

@@ -1,0 +1,24 @@
+#pragma once
+// Solver settings for a gait optimisation from a distant start (the automatic starting gait, a
+// perturbed gait of a multistart, a neighbouring curve's optimum), shared by the optimise and
+// multistart jobs, the speed sweep and the foot design.
+
+#include "cyclopt/nlp/solver_options.hpp"
+
+namespace cyclopt::walker {
+
+// Hessian refresh period of distant_start_solver (iterations of the SQP, Hessian evaluations of
+// Ipopt): 50 costs ~n/50 = 0.6 Jacobians per iteration for the walker's n ~ 30.
+inline constexpr int kDistantStartHessianRefresh = 50;
+
+// `solver` with the Hessian approximation started from W_1 of (6.24) on the forward-difference
+// Hessian of the Lagrangian, as the seed's SQP (W_1 = I is only its comparison with fmincon), and
+// refreshed the same way every kDistantStartHessianRefresh iterations (not in the seed) - for the
+// SQP and for Ipopt's damped BFGS alike. Measured from the automatic starting gait and from
+// perturbed starts (bench/results/walker_solvers.txt, multistart_bench.txt): the damped BFGS
+// update alone crawls for thousands of iterations on rolling feet (P2-shoes HMT at 1.3 m/s: one of
+// 8 perturbed starts at MaxIter, 5547 iterations for 8; with the refresh 8/8 KKT in 1637), and
+// Ipopt reaches a KKT point from the starting gait on HM and HMT feet only with it.
+nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver);
+
+}  // namespace cyclopt::walker
