@@ -5,7 +5,9 @@
 // none). Issue 5 asks for <= 60 s wall per foot model.
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
-// [trapezoid|corrected] [coarse P = 0 (off); SpeedSweepOptions::coarse_points] [qp|trivial predictor]: foot is a preset name or a JSON foot file (bench/feet/); the sweep is stopped at
+// [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-reuse|trivial predictor]:
+// foot is a preset name or a JSON foot file (bench/feet/); qp-reuse sets ContinuationOptions::reuse_predictor_hessian,
+// trivial gives the corrector W_1 of (6.24); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off.
 #include "bench_foot.hpp"
@@ -41,7 +43,12 @@ int main(int argc, char** argv) {
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
-  if (argc > 8) o.continuation.predictor = parse_predictor(argv[8]);
+  if (argc > 8 && std::string(argv[8]) == "qp-reuse")  // the QP predictor with one (6.24) per continuation point
+    o.continuation.reuse_predictor_hessian = true;
+  else if (argc > 8)
+    o.continuation.predictor = parse_predictor(argv[8]);
+  // The trivial predictor hands the corrector no W: it starts from W_1 of (6.24), as in continuation_bench.
+  if (o.continuation.predictor == continuation::Predictor::trivial) o.continuation.corrector.sqp.difference_hessian = true;
   const SpeedSweepResult r = speed_sweep(model, po, o, [&](const CurvePoint& p) {
     std::printf("  point v %.4f curve %d %s f %.6f (%d corrector iterations, %.2f s)\n", p.parameter, p.curve_id,
                 p.converged ? "ok    " : "FAILED", p.objective, p.corrector.iterations, p.seconds);

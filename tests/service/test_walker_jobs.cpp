@@ -226,6 +226,19 @@ TEST(WalkerJobSpec, CoarseMultistartGridIsOffOrAUsableGrid) {
   }
 }
 
+TEST(WalkerJobSpec, PredictorHessianIsPerPointOrPerTry) {
+  for (const char* task : {"sweep", "continuation"}) {
+    nlohmann::json s = {{"scene", "walker"}, {"task", task}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};
+    for (const char* good : {"per_point", "per_try"}) {
+      s["continuation"] = {{"predictor_hessian", good}};
+      EXPECT_EQ(rejection(s), "accepted") << task << " " << good;
+    }
+    s["continuation"] = {{"predictor_hessian", "sometimes"}};
+    EXPECT_EQ(rejection(s).rfind("continuation.predictor_hessian: ", 0), 0u) << rejection(s);
+    EXPECT_NE(rejection(s).find("per_try"), std::string::npos) << rejection(s);
+  }
+}
+
 TEST(WalkerJobSpec, RejectsBadWalkerFieldsNamingThem) {
   nlohmann::json s = walker_spec("optimise");
   s["speed"] = 7.0;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 
 using namespace cyclopt;
 using namespace cyclopt::continuation;
@@ -35,7 +36,58 @@ void print(const ContinuationResult& r) {
   std::printf("%s; %zu jumps, %.1f s\n", r.message.c_str(), r.jumps.size(), r.seconds);
 }
 
+// Counts the evaluations with derivatives (Jacobians) asked of a problem.
+class CountingProblem : public nlp::Problem {
+ public:
+  CountingProblem(std::unique_ptr<nlp::Problem> inner, int& jacobians) : inner_(std::move(inner)), jacobians_(jacobians) {}
+  int num_variables() const override { return inner_->num_variables(); }
+  int num_equalities() const override { return inner_->num_equalities(); }
+  int num_inequalities() const override { return inner_->num_inequalities(); }
+  Eigen::VectorXd lower_bounds() const override { return inner_->lower_bounds(); }
+  Eigen::VectorXd upper_bounds() const override { return inner_->upper_bounds(); }
+  nlp::EvaluationStatus evaluate(const Eigen::VectorXd& x, bool with_derivatives, nlp::Evaluation& out) override {
+    jacobians_ += with_derivatives;
+    return inner_->evaluate(x, with_derivatives, out);
+  }
+
+ private:
+  std::unique_ptr<nlp::Problem> inner_;
+  int& jacobians_;
+};
+
 }  // namespace
+
+TEST(WalkerContinuation, OnePredictorHessianPerPointFollowsTheSameCurveForFewerJacobians) {
+  const PointFeet& pf = point_feet();
+  ASSERT_TRUE(pf.start.summary.success());
+  const ParametricProblem family = walker_family(pf.model, pf.problem, "speed");
+  const std::vector<double> grid{1.0, 1.1, 1.2, 1.3};
+  std::map<bool, ContinuationResult> runs;
+  std::map<bool, int> jacobians;
+  for (const bool reuse : {false, true}) {
+    const ParametricProblem counted{family.parameter_name, [&](double p) {
+                                      return std::make_unique<CountingProblem>(family.at(p), jacobians[reuse]);
+                                    }};
+    ContinuationOptions o;
+    o.reuse_predictor_hessian = reuse;
+    runs[reuse] = continue_solution(counted, pf.start.z, grid, o);
+    print(runs[reuse]);
+    ASSERT_TRUE(runs[reuse].finished) << runs[reuse].message;
+  }
+  std::printf("Jacobians: per try %d, per point %d\n", jacobians[false], jacobians[true]);
+  std::map<double, double> per_try;
+  for (const CurvePoint& p : runs[false].points)
+    if (p.on_grid) per_try[p.parameter] = p.objective;
+  int compared = 0;
+  for (const CurvePoint& p : runs[true].points)
+    if (p.on_grid) {
+      ASSERT_TRUE(per_try.count(p.parameter)) << p.parameter;
+      EXPECT_NEAR(p.objective, per_try[p.parameter], 1e-6 * std::abs(p.objective)) << p.parameter;
+      ++compared;
+    }
+  EXPECT_EQ(compared, static_cast<int>(grid.size()));
+  EXPECT_LT(jacobians[true], jacobians[false]);
+}
 
 TEST(WalkerContinuation, BackAndForthReturnsToTheSameOptimum) {
   const PointFeet& pf = point_feet();

@@ -13,6 +13,8 @@ Predictor parse_predictor(const std::string& text, const std::string& field) {
   throw std::invalid_argument(field + ": must be \"qp\" or \"trivial\", got \"" + text + "\"");
 }
 
+const char* predictor_hessian_name(bool reuse_predictor_hessian) { return reuse_predictor_hessian ? "per_point" : "per_try"; }
+
 namespace {
 
 void require(bool ok, const char* field, const char* range) {

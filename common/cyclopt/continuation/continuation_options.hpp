@@ -13,6 +13,9 @@ enum class Predictor {
 const char* to_string(Predictor p);
 // "qp" or "trivial"; anything else throws std::invalid_argument naming `field`.
 Predictor parse_predictor(const std::string& text, const std::string& field = "predictor");
+// The job spec's names of ContinuationOptions::reuse_predictor_hessian: "per_point" (true) and
+// "per_try" (false, Algorithm 2).
+const char* predictor_hessian_name(bool reuse_predictor_hessian);
 
 struct ContinuationOptions {
   Predictor predictor = Predictor::qp;
@@ -28,6 +31,12 @@ struct ContinuationOptions {
   // Inequalities with c_u >= -active_tolerance at x_k are active for the multipliers (6.26) of
   // the predictor's Hessians (6.24).
   double active_tolerance = 1e-6;
+  // QP predictor: false (Algorithm 2) - every try computes (6.24) at x_k and at x_{k,1}, 2n
+  // Jacobians; true - one (6.24) at x_k per continuation point, reused by every try from x_k,
+  // and W_2 the BFGS update (6.22) of W_1 (QpPredictorSettings::fresh_second_hessian; not in the
+  // seed). P2-shoes HMT speed sweep: the same best f_mech at all 21 speeds for 45 % less CPU
+  // (bench/results/speed_sweep_bench.txt); the seed's way stays selectable.
+  bool reuse_predictor_hessian = true;
   // Jump to another solution curve (section 8.2: the followed optimum stops existing and the
   // corrector converges elsewhere): the secant |x_{k+1} - x_k|_2 / |Delta p| exceeds
   // jump_slope_factor times that of the previous step on the same curve, and the relative

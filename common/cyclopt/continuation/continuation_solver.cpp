@@ -44,6 +44,7 @@ class Run {
     settings_.constraint_tolerance = o.corrector.constraint_tolerance;
     settings_.relative_min_penalty = o.corrector.sqp.relative_min_penalty;
     settings_.qp = o.corrector.sqp.qp;
+    settings_.fresh_second_hessian = !o.reuse_predictor_hessian;
   }
 
   ContinuationResult run(const VectorXd& x0);
@@ -113,6 +114,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
   std::optional<double> secant;  // of the last step on the current curve
   double trivial_step = 0.0;     // > 0: shortened after a failed corrector
   const bool to_each_value = o_.predictor == Predictor::qp || o_.fixed_step == 0.0;
+  std::optional<MatrixXd> W1_at_k;  // reuse_predictor_hessian: the predictor's W_1 at x_k
   for (;;) {
     const Clock::time_point t0 = Clock::now();
     const double target = to_each_value ? grid_[l] : grid_.back();
@@ -126,7 +128,8 @@ ContinuationResult Run::run(const VectorXd& x0) {
         ++point.predictor_attempts;
         step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
         p_new = step == remaining ? target : p + direction * step;
-        const QpPredictorResult pr = qp_predictor(*family_.at(p_new), x_k, settings_);
+        const QpPredictorResult pr = qp_predictor(*family_.at(p_new), x_k, settings_, W1_at_k ? &*W1_at_k : nullptr);
+        if (o_.reuse_predictor_hessian && pr.W1.size() > 0) W1_at_k = pr.W1;
         point.predictor_steps += pr.steps;
         const bool accepted = pr.outcome == PredictorOutcome::both_steps && pr.kappa < 1.0;
         if (accepted || step <= o_.min_trust_region) {
@@ -183,6 +186,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
     }
     point.curve_id = curve_;
     x_k = point.x;
+    W1_at_k.reset();
     f_k = point.objective;
     solve_k = point.corrector;
     p = p_new;

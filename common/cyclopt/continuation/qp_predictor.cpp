@@ -113,24 +113,29 @@ class Predictor {
 
 }  // namespace
 
-QpPredictorResult qp_predictor(nlp::Problem& problem, const VectorXd& x_k, const QpPredictorSettings& settings) {
+QpPredictorResult qp_predictor(nlp::Problem& problem, const VectorXd& x_k, const QpPredictorSettings& settings,
+                               const MatrixXd* given_W1) {
   Predictor pred(problem, settings);
   QpPredictorResult r;
   r.x = x_k;
   r.W = MatrixXd::Identity(x_k.size(), x_k.size());
   const std::optional<Iterate> x0 = pred.iterate_at(x_k, {});  // step 3
   if (!x0) return r;
-  const MatrixXd W1 = pred.clamped_hessian_at(*x0);
-  r.W = W1;
+  const MatrixXd W1 = given_W1 ? *given_W1 : pred.clamped_hessian_at(*x0);
+  r.W = r.W1 = W1;
   qp::WorkingSet warm;
   const std::optional<FullStep> s1 = pred.full_step(*x0, W1, warm);  // steps 4-6
   r.steps = pred.steps();
   if (!s1) return r;  // step 18
   r.outcome = PredictorOutcome::first_step;
   r.x = s1->next.x;
-  MatrixXd W2 = pred.clamped_hessian_at(s1->next);  // step 7
-  std::optional<FullStep> s2 = pred.full_step(s1->next, W2, warm);  // steps 8-10
-  if (!s2) {  // steps 11-14: retry d_2 with the BFGS update (6.22) of W_1
+  MatrixXd W2 = W1;
+  std::optional<FullStep> s2;
+  if (settings.fresh_second_hessian) {
+    W2 = pred.clamped_hessian_at(s1->next);  // step 7
+    s2 = pred.full_step(s1->next, W2, warm);  // steps 8-10
+  }
+  if (!s2) {  // steps 11-14: (retry) d_2 with the BFGS update (6.22) of W_1
     W2 = W1;
     Predictor::bfgs(W2, *x0, s1->next);
     s2 = pred.full_step(s1->next, W2, warm);

@@ -17,6 +17,10 @@ struct QpPredictorSettings {
   double constraint_tolerance = 1e-8;  // bounds within this are active for (6.26)
   double relative_min_penalty = 1e-3;  // sigma of (6.9)
   qp::ActiveSetOptions qp;             // for the subproblems (6.7)
+  // Algorithm 2 computes W_2 from (6.24) at x_{k,1} (step 7) and falls back on the BFGS update
+  // (6.22) of W_1 only if d_2 fails. false: W_2 is that BFGS update from the start, so a try
+  // costs one difference Hessian (n Jacobians) instead of two (not in the seed).
+  bool fresh_second_hessian = true;
 };
 
 enum class PredictorOutcome {
@@ -29,11 +33,15 @@ struct QpPredictorResult {
   PredictorOutcome outcome = PredictorOutcome::no_step;
   Eigen::VectorXd x;  // x_{k+1,0}: x_{k,2}, x_{k,1} or x_k by outcome
   Eigen::MatrixXd W;  // W_{k+1,0}: W_3, W_2 or W_1 by outcome (identity if x_k does not evaluate)
+  Eigen::MatrixXd W1;  // the W_1 of this try (empty if x_k does not evaluate), for the next try at x_k
   double kappa = std::numeric_limits<double>::quiet_NaN();
   int steps = 0;        // QP solves (d_1, d_2, the BFGS retry of d_2)
 };
 
-// `problem` is the NLP at p_k + Delta p; x_k the solution at p_k.
-QpPredictorResult qp_predictor(nlp::Problem& problem, const Eigen::VectorXd& x_k, const QpPredictorSettings& settings);
+// `problem` is the NLP at p_k + Delta p; x_k the solution at p_k. W1: W_1 of an earlier try from
+// the same x_k (at another Delta p) to use instead of (6.24) at x_k and p_k + Delta p (not in the
+// seed: the Hessian's change with Delta p is what the BFGS updates of the steps absorb).
+QpPredictorResult qp_predictor(nlp::Problem& problem, const Eigen::VectorXd& x_k, const QpPredictorSettings& settings,
+                               const Eigen::MatrixXd* W1 = nullptr);
 
 }  // namespace cyclopt::continuation

@@ -42,10 +42,15 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   if (!spec.contains("continuation")) return j;
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
   reject_unknown_keys(c, "continuation",
-                      {"predictor", "fixed_step", "min_trust_region", "max_trust_region", "parameter", "values", "seed_speeds",
-                       "coarse_points"});
+                      {"predictor", "predictor_hessian", "fixed_step", "min_trust_region", "max_trust_region", "parameter",
+                       "values", "seed_speeds", "coarse_points"});
   if (c.contains("predictor"))
     j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", {"qp", "trivial"}));
+  if (c.contains("predictor_hessian"))
+    j.options.reuse_predictor_hessian = enum_value(c["predictor_hessian"], "continuation.predictor_hessian",
+                                                   {continuation::predictor_hessian_name(true),
+                                                    continuation::predictor_hessian_name(false)}) ==
+                                        continuation::predictor_hessian_name(true);
   j.options.fixed_step = optional_number(c, "continuation", "fixed_step", 0.0, 1e3).value_or(0.0);
   j.options.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(j.options.min_trust_region);
   j.options.max_trust_region = optional_number(c, "continuation", "max_trust_region", 0.0, 1e3).value_or(0.0);
@@ -80,6 +85,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
 nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
   nlohmann::json r = walker_job_json(j.walker, true, sweep);
   nlohmann::json c = {{"predictor", continuation::to_string(j.options.predictor)},
+                      {"predictor_hessian", continuation::predictor_hessian_name(j.options.reuse_predictor_hessian)},
                       {"fixed_step", j.options.fixed_step},
                       {"min_trust_region", j.options.min_trust_region},
                       {"max_trust_region", j.options.max_trust_region},
