@@ -188,9 +188,10 @@ TEST(SqpInitialHessian, DifferenceHessianRefreshReachesThePublishedOptima) {
       const SolverSummary s = solve(*problem, o, tp.x0);
       ASSERT_TRUE(s.success()) << tp.name << " " << to_string(kind) << ": " << s.message;
       EXPECT_NEAR(s.objective, tp.f_star, 1e-6 * std::max(1.0, std::abs(tp.f_star))) << tp.name << " " << to_string(kind);
-      if (once.iterations > 4 && s.iterations > 4)
+      if (once.iterations > 4 && s.iterations > 4) {
         EXPECT_GE(s.jacobian_evaluations, once.jacobian_evaluations * s.iterations / once.iterations + problem->num_variables())
             << tp.name << " " << to_string(kind) << ": no refresh seen";
+      }
     }
   }
 }
