@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Main job of the service (README, "The service" and "Pictures and reports"): starts cycloptd with a
 # fresh database in out/service/, submits a walker speed sweep (optimal gaits of FOOT over SPEEDS;
-# default: point feet, Table D.1, whose SQP solves converge reliably - the rolling feet HM/HMT do not
-# yet, see issue 4), watches it, prints the result table, then writes the
+# default: point feet, Table D.1, the quickest; rolling feet such as FOOT=P2-shoes-left-HMT take
+# minutes, bench/results/speed_sweep_bench.txt), watches it, prints the result table, then writes the
 # pictures (PNG and SVG) to out/pictures/ and the job's HTML report to out/report.html, and the
 # giant swing stroboscope of the seed's single swing beside them.
 # LCM traffic stays inside a private network namespace created here (needs root): nothing goes
