@@ -2,12 +2,12 @@
 
 namespace cyclopt::walker {
 
-nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver) {
+nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver, int hessian_refresh) {
   solver.sqp.difference_hessian = true;
-  solver.sqp.difference_hessian_every = kDistantStartHessianRefresh;
+  solver.sqp.difference_hessian_every = hessian_refresh;
   if (solver.ipopt.hessian == nlp::IpoptHessian::damped_bfgs) {
     solver.ipopt.difference_hessian_start = true;
-    solver.ipopt.difference_hessian_every = kDistantStartHessianRefresh;
+    solver.ipopt.difference_hessian_every = hessian_refresh;
   }
   return solver;
 }

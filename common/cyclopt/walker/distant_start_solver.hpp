@@ -19,6 +19,7 @@ inline constexpr int kDistantStartHessianRefresh = 50;
 // update alone crawls for thousands of iterations on rolling feet (P2-shoes HMT at 1.3 m/s: one of
 // 8 perturbed starts at MaxIter, 5547 iterations for 8; with the refresh 8/8 KKT in 1637), and
 // Ipopt reaches a KKT point from the starting gait on HM and HMT feet only with it.
-nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver);
+// hessian_refresh: the period; 0 keeps W_1 only (the design multistart, foot_design.cpp).
+nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver, int hessian_refresh = kDistantStartHessianRefresh);
 
 }  // namespace cyclopt::walker
