@@ -5,9 +5,10 @@
 // none). Issue 5 asks for <= 60 s wall per foot model.
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
-// [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-reuse|trivial predictor]:
-// foot is a preset name or a JSON foot file (bench/feet/); qp-reuse sets ContinuationOptions::reuse_predictor_hessian,
-// trivial gives the corrector W_1 of (6.24); the sweep is stopped at
+// [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-per-try|trivial predictor]:
+// foot is a preset name or a JSON foot file (bench/feet/); qp-per-try computes the predictor's difference Hessians
+// per try as Algorithm 2 (ContinuationOptions::reuse_predictor_hessian false), trivial gives the corrector W_1 of
+// (6.24); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off.
 #include "bench_foot.hpp"
@@ -43,8 +44,8 @@ int main(int argc, char** argv) {
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
-  if (argc > 8 && std::string(argv[8]) == "qp-reuse")  // the QP predictor with one (6.24) per continuation point
-    o.continuation.reuse_predictor_hessian = true;
+  if (argc > 8 && std::string(argv[8]) == "qp-per-try")  // the QP predictor with two (6.24) per try (Algorithm 2)
+    o.continuation.reuse_predictor_hessian = false;
   else if (argc > 8)
     o.continuation.predictor = parse_predictor(argv[8]);
   // The trivial predictor hands the corrector no W: it starts from W_1 of (6.24), as in continuation_bench.
@@ -57,7 +58,8 @@ int main(int argc, char** argv) {
   std::printf("\nfoot %s, f_mech, P = %d (multistarts at P = %d first), %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n",
               foot_name.c_str(), constants.points, o.coarse_points > 0 ? o.coarse_points : constants.points,
               rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
-  std::printf("continuation: %s predictor\n", to_string(o.continuation.predictor));
+  std::printf("continuation: %s predictor, predictor Hessian %s\n", to_string(o.continuation.predictor),
+              predictor_hessian_name(o.continuation.reuse_predictor_hessian));
   // Idle estimate: the multistarts use both cores, the continuation runs one.
   const double cpu = bench::cpu_seconds() - cpu_at_start;
   std::printf("wall time %.1f s (multistart %.1f s for %d solves, recovery %.1f s), %s at the end\n", r.seconds,
