@@ -126,3 +126,33 @@ TEST(WalkerContinuation, SensitivityFollowsTheOptimumOverAModelParameter) {
   EXPECT_NEAR(s[0].points[1].delta_objective, 0.0, 1e-12);
   for (const SensitivityPoint& p : s[0].points) EXPECT_EQ(p.curve_id, 0);
 }
+
+// Step 1 from a KKT point that another solve found (here recovery R1 of a P2-shoes HMT sweep at
+// 0.3 m/s, f_mech 0.003644, with the multistart's Hessian refresh off) but whose active set the
+// corrector's own first test does not confirm: from W_1 = I the corrector stopped at its 300
+// iterations (KKT 3.3e-4) and the sweep lost the point; from W_1 of (6.24) on differences it is
+// the run's first point.
+TEST(WalkerContinuation, TheFirstPointFromAnotherSolversKktPointConverges) {
+  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("P2-shoes-left-HMT").spec);
+  const walker::GaitProblemOptions problem{walker::Objective::mechanical, 0.3, walker::Quadrature::trapezoid, {}};
+  Eigen::VectorXd x0(30);
+  x0 << 3.0515508562448899, 3.1683880540507259, 0.31214909787909167, 0.2343469593738112, -1.1003398695513267,
+      -1.1674111731325543, 3.098657566568622, 3.0980911513329454, 0.29692919401893103, 0.35144486245335504,
+      -1.1202049095409092, -1.0347712519753915, 3.1139707573868494, 3.1247339418109794, 0.34808635793174875,
+      0.30474198267480546, -1.1110373559523381, -1.2457706945738145, 3.1502640231886399, 2.9301202933895296,
+      0.24230367439265116, 0.31015856438282091, -1.114309015088125, -1.0167371688601476, 3.1477705904237516,
+      2.9874438924278768, 0.33572654156379622, 0.31008358068979985, 2.3789055143195541, 2.2196525420306141;
+  ASSERT_EQ(walker::GaitProblem(model, problem).num_variables(), x0.size());
+  nlp::Evaluation at_x0;
+  ASSERT_TRUE(walker::GaitProblem(model, problem).evaluate(x0, false, at_x0).ok);
+  ContinuationOptions o;
+  o.corrector.max_iterations = 300;  // SpeedSweepOptions::corrector_max_iterations
+  const ContinuationResult r =
+      continue_solution(walker_family(model, problem, "speed"), x0, {0.3, 0.4}, o, {}, [](const CurvePoint&) { return false; });
+  ASSERT_EQ(r.points.size(), 1u);
+  const CurvePoint& first = r.points.front();
+  std::printf("first point: %s after %d iterations, f %.6f (x0: %.6f)\n", first.corrector.message.c_str(),
+              first.corrector.iterations, first.objective, at_x0.objective);
+  EXPECT_TRUE(first.converged) << first.corrector.message;
+  EXPECT_NEAR(first.objective, at_x0.objective, 1e-3 * at_x0.objective);
+}

@@ -56,6 +56,14 @@ class Run {
     nlp::SolverOptions so = o_.corrector;
     if (W && so.solver == nlp::SolverKind::sqp)  // step 19: W_{k+1,0} as the SQP's initial Hessian
       so.sqp.lagrangian_hessian = [W](const VectorXd&, const VectorXd&, const VectorXd&) { return *W; };
+    // Step 1: the first point starts from W_1 of (6.24) on differences. It is usually a KKT point
+    // of another solve (a multistart, a recovery) that the SQP accepts before computing any W_1;
+    // where its own test disagrees (another active set), W_1 = I needed > 300 iterations and lost
+    // the point (P2 HMT 0.3 m/s, recovery R1 f_mech 0.003644).
+    if (!W && !previous) {
+      so.sqp.difference_hessian = true;
+      so.ipopt.difference_hessian_start = true;
+    }
     // Ipopt warm start: the last point's multipliers, and the Hessian from differences at the
     // start - from the identity Ipopt needs as many iterations as from a cold start (point feet
     // 1.3 -> 1.4 m/s: 214 iterations, with the difference Hessian 7; walker_solvers.txt).

@@ -268,13 +268,7 @@ void SqpRun::run(const VectorXd& x0) {
   for (Index i = 0; i < m_in_; ++i)
     if (current_.inequalities[i] >= -options_.constraint_tolerance) initially_active.push_back(static_cast<int>(i));
   multipliers_ = least_squares_multipliers(current_, active_at(x_, initially_active));
-  std::optional<MatrixXd> hessian;  // of the Lagrangian (6.23)
-  if (sqp_.lagrangian_hessian)
-    hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
-  else if (sqp_.difference_hessian)
-    hessian = difference_hessian();
-  const bool identity_start = !hessian;
-  W_ = identity_start ? MatrixXd::Identity(n_, n_) : clamped_hessian(*hessian);  // (6.24)
+  bool identity_start = true;
 
   for (int k = 1;; ++k) {
     if (is_kkt_point()) {  // step 2
@@ -301,6 +295,15 @@ void SqpRun::run(const VectorXd& x0) {
     if (current_.objective < sqp_.objective_limit) {
       stop(Termination::numerical_failure, "objective below ObjLimit: probably unbounded below");
       break;
+    }
+    if (k == 1) {  // W_1 after the test of step 2: a start at a KKT point (a continuation's first point) needs none
+      std::optional<MatrixXd> hessian;  // of the Lagrangian (6.23)
+      if (sqp_.lagrangian_hessian)
+        hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
+      else if (sqp_.difference_hessian)
+        hessian = difference_hessian();
+      identity_start = !hessian;
+      W_ = identity_start ? MatrixXd::Identity(n_, n_) : clamped_hessian(*hessian);  // (6.24)
     }
     const std::optional<SearchDirection> dir = search_direction();  // steps 3-7
     if (!dir) break;
