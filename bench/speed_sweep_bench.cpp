@@ -5,7 +5,8 @@
 // none). Issue 5 asks for <= 60 s wall per foot model.
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
-// [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-per-try|trivial predictor]:
+// [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-per-try|trivial|trivial_then_qp
+// predictor]:
 // foot is a preset name or a JSON foot file (bench/feet/); qp-per-try computes the predictor's difference Hessians
 // per try as Algorithm 2 (ContinuationOptions::reuse_predictor_hessian false), trivial gives the corrector W_1 of
 // (6.24); the sweep is stopped at

@@ -55,8 +55,15 @@ TEST(ContinuationOptions, ErrorsNameTheField) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("tau"), std::string::npos);
   }
-  EXPECT_THROW(parse_predictor("tangent"), std::invalid_argument);
-  EXPECT_EQ(parse_predictor("qp"), Predictor::qp);
+  try {
+    parse_predictor("tangent", "continuation.predictor");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("continuation.predictor"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("trivial_then_qp"), std::string::npos);
+  }
+  for (const Predictor p : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp})
+    EXPECT_EQ(parse_predictor(to_string(p)), p);
 }
 
 TEST(ContinuationOptions, ParametersMustBeMonotone) {
@@ -93,8 +100,25 @@ TEST(Continuation, HitsEveryRequestedValueExactly) {
   EXPECT_TRUE(r.jumps.empty());
 }
 
+// trivial_then_qp on a smooth curve: every requested value by its direct step, no QP predictor.
+TEST(Continuation, TrivialThenQpStepsDirectlyWhereTheCurveIsSmooth) {
+  const std::vector<double> grid{0.0, 0.1, 0.2, 0.3};
+  ContinuationOptions o;
+  o.predictor = Predictor::trivial_then_qp;
+  const ContinuationResult r = continue_solution(shifted, Eigen::VectorXd::Zero(1), grid, o);
+  ASSERT_TRUE(r.finished) << r.message;
+  ASSERT_EQ(r.points.size(), grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_EQ(r.points[i].parameter, grid[i]);
+    EXPECT_NEAR(r.points[i].x[0], grid[i], 1e-6);
+    EXPECT_EQ(r.points[i].predictor_attempts, 0);
+  }
+  EXPECT_EQ(r.predictor_steps, 0);
+}
+
+// Where the direct step fails (no solution at 1.1), the QP predictor's trust region takes over.
 TEST(Continuation, StopsAtTheMinimalStepWhereTheCorrectorKeepsFailing) {
-  for (const Predictor predictor : {Predictor::qp, Predictor::trivial}) {
+  for (const Predictor predictor : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp}) {
     ContinuationOptions o;
     o.predictor = predictor;
     const ContinuationResult r = continue_solution(shifted, Eigen::VectorXd::Zero(1), {1.0, 1.1}, o);

@@ -55,6 +55,21 @@ class CountingProblem : public nlp::Problem {
   int& jacobians_;
 };
 
+// Both runs reach every grid value with the same optimum (relative 1e-6).
+void expect_same_grid_optima(const ContinuationResult& reference, const ContinuationResult& other, std::size_t grid_size) {
+  std::map<double, double> f;
+  for (const CurvePoint& p : reference.points)
+    if (p.on_grid) f[p.parameter] = p.objective;
+  std::size_t compared = 0;
+  for (const CurvePoint& p : other.points)
+    if (p.on_grid) {
+      ASSERT_TRUE(f.count(p.parameter)) << p.parameter;
+      EXPECT_NEAR(p.objective, f[p.parameter], 1e-6 * std::abs(p.objective)) << p.parameter;
+      ++compared;
+    }
+  EXPECT_EQ(compared, grid_size);
+}
+
 }  // namespace
 
 TEST(WalkerContinuation, OnePredictorHessianPerPointFollowsTheSameCurveForFewerJacobians) {
@@ -75,18 +90,27 @@ TEST(WalkerContinuation, OnePredictorHessianPerPointFollowsTheSameCurveForFewerJ
     ASSERT_TRUE(runs[reuse].finished) << runs[reuse].message;
   }
   std::printf("Jacobians: per try %d, per point %d\n", jacobians[false], jacobians[true]);
-  std::map<double, double> per_try;
-  for (const CurvePoint& p : runs[false].points)
-    if (p.on_grid) per_try[p.parameter] = p.objective;
-  int compared = 0;
-  for (const CurvePoint& p : runs[true].points)
-    if (p.on_grid) {
-      ASSERT_TRUE(per_try.count(p.parameter)) << p.parameter;
-      EXPECT_NEAR(p.objective, per_try[p.parameter], 1e-6 * std::abs(p.objective)) << p.parameter;
-      ++compared;
-    }
-  EXPECT_EQ(compared, static_cast<int>(grid.size()));
+  expect_same_grid_optima(runs[false], runs[true], grid.size());
   EXPECT_LT(jacobians[true], jacobians[false]);
+}
+
+// Point feet: the direct steps of 0.1 m/s stay on the QP predictor's curve.
+TEST(WalkerContinuation, TrivialThenQpReachesTheQpOptimaByDirectSteps) {
+  const PointFeet& pf = point_feet();
+  ASSERT_TRUE(pf.start.summary.success());
+  const ParametricProblem family = walker_family(pf.model, pf.problem, "speed");
+  const std::vector<double> grid{1.0, 1.1, 1.2, 1.3};
+  std::map<Predictor, ContinuationResult> runs;
+  for (const Predictor predictor : {Predictor::qp, Predictor::trivial_then_qp}) {
+    ContinuationOptions o;
+    o.predictor = predictor;
+    runs[predictor] = continue_solution(family, pf.start.z, grid, o);
+    print(runs[predictor]);
+    ASSERT_TRUE(runs[predictor].finished) << runs[predictor].message;
+  }
+  expect_same_grid_optima(runs[Predictor::qp], runs[Predictor::trivial_then_qp], grid.size());
+  EXPECT_EQ(runs[Predictor::trivial_then_qp].predictor_steps, 0);
+  EXPECT_GT(runs[Predictor::qp].predictor_steps, 0);
 }
 
 TEST(WalkerContinuation, BackAndForthReturnsToTheSameOptimum) {

@@ -5,12 +5,19 @@
 
 namespace cyclopt::continuation {
 
-const char* to_string(Predictor p) { return p == Predictor::qp ? "qp" : "trivial"; }
+const char* to_string(Predictor p) {
+  switch (p) {
+    case Predictor::qp: return "qp";
+    case Predictor::trivial: return "trivial";
+    case Predictor::trivial_then_qp: return "trivial_then_qp";
+  }
+  return "?";
+}
 
 Predictor parse_predictor(const std::string& text, const std::string& field) {
-  if (text == "qp") return Predictor::qp;
-  if (text == "trivial") return Predictor::trivial;
-  throw std::invalid_argument(field + ": must be \"qp\" or \"trivial\", got \"" + text + "\"");
+  for (Predictor p : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp})
+    if (text == to_string(p)) return p;
+  throw std::invalid_argument(field + ": must be \"qp\", \"trivial\" or \"trivial_then_qp\", got \"" + text + "\"");
 }
 
 const char* predictor_hessian_name(bool reuse_predictor_hessian) { return reuse_predictor_hessian ? "per_point" : "per_try"; }

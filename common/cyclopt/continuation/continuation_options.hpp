@@ -9,9 +9,14 @@ namespace cyclopt::continuation {
 enum class Predictor {
   qp,       // the QP predictor of Algorithm 2 (two SQP steps, kappa (7.2), trust region)
   trivial,  // x_{k+1,0} = x_k (warm start), no step control
+  // Not in the seed: first the direct step from x_k to the next requested value, its corrector
+  // (SQP) from W_1 of (6.24) on differences; kept when it converges and test_jump sees no jump,
+  // otherwise the QP predictor of Algorithm 2 from x_k up to that value. The fixed step of
+  // continuation_bench was ~20x cheaper than QPSQP where the curve is smooth (section 8.2).
+  trivial_then_qp,
 };
 const char* to_string(Predictor p);
-// "qp" or "trivial"; anything else throws std::invalid_argument naming `field`.
+// "qp", "trivial" or "trivial_then_qp"; anything else throws std::invalid_argument naming `field`.
 Predictor parse_predictor(const std::string& text, const std::string& field = "predictor");
 // The job spec's names of ContinuationOptions::reuse_predictor_hessian: "per_point" (true) and
 // "per_try" (false, Algorithm 2).

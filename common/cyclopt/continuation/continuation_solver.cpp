@@ -51,16 +51,13 @@ class Run {
 
  private:
   // `previous`: the corrector's solve at the last point (absent for the first point).
+  // difference_start: without W, the SQP starts from W_1 of (6.24) on differences, not from I.
   nlp::SolverSummary correct(double p, const VectorXd& x_start, const std::optional<MatrixXd>& W,
-                             const nlp::SolverSummary* previous) const {
+                             const nlp::SolverSummary* previous, bool difference_start) const {
     nlp::SolverOptions so = o_.corrector;
     if (W && so.solver == nlp::SolverKind::sqp)  // step 19: W_{k+1,0} as the SQP's initial Hessian
       so.sqp.lagrangian_hessian = [W](const VectorXd&, const VectorXd&, const VectorXd&) { return *W; };
-    // Step 1: the first point starts from W_1 of (6.24) on differences. It is usually a KKT point
-    // of another solve (a multistart, a recovery) that the SQP accepts before computing any W_1;
-    // where its own test disagrees (another active set), W_1 = I needed > 300 iterations and lost
-    // the point (P2 HMT 0.3 m/s, recovery R1 f_mech 0.003644).
-    if (!W && !previous) {
+    if (!W && difference_start) {
       so.sqp.difference_hessian = true;
       so.ipopt.difference_hessian_start = true;
     }
@@ -101,7 +98,11 @@ ContinuationResult Run::run(const VectorXd& x0) {
   first.parameter = grid_[0];
   first.curve_id = curve_;
   first.on_grid = true;
-  first.corrector = correct(grid_[0], x0, std::nullopt, nullptr);
+  // From W_1 of (6.24) on differences: x0 is usually a KKT point of another solve (a multistart, a
+  // recovery) that the SQP accepts before computing any W_1; where its own test disagrees (another
+  // active set), W_1 = I needed > 300 iterations and lost the point (P2 HMT 0.3 m/s, recovery R1
+  // f_mech 0.003644).
+  first.corrector = correct(grid_[0], x0, std::nullopt, nullptr, true);
   first.converged = first.corrector.success();
   first.x = first.corrector.x;
   first.objective = first.corrector.objective;
@@ -121,7 +122,9 @@ ContinuationResult Run::run(const VectorXd& x0) {
   std::size_t l = 1;
   std::optional<double> secant;  // of the last step on the current curve
   double trivial_step = 0.0;     // > 0: shortened after a failed corrector
-  const bool to_each_value = o_.predictor == Predictor::qp || o_.fixed_step == 0.0;
+  const bool uses_qp = o_.predictor != Predictor::trivial;
+  const bool to_each_value = uses_qp || o_.fixed_step == 0.0;
+  std::size_t tried_value = 0;  // trivial_then_qp: the requested value l whose direct step was tried
   std::optional<MatrixXd> W1_at_k;  // reuse_predictor_hessian: the predictor's W_1 at x_k
   for (;;) {
     const Clock::time_point t0 = Clock::now();
@@ -131,7 +134,22 @@ ContinuationResult Run::run(const VectorXd& x0) {
     VectorXd x_start = x_k;
     std::optional<MatrixXd> W;
     double p_new = 0.0, step = 0.0, next_trust = trust_;  // step = |Delta p| exactly (p_new - p may round)
-    if (o_.predictor == Predictor::qp) {
+    // trivial_then_qp: once per requested value, the direct step to it from x_k; kept if its
+    // corrector converges on the same curve (test_jump), else the QP predictor takes over.
+    std::optional<nlp::SolverSummary> direct;
+    if (o_.predictor == Predictor::trivial_then_qp && tried_value != l) {
+      tried_value = l;
+      nlp::SolverSummary s = correct(target, x_k, std::nullopt, &solve_k, true);
+      if (s.termination == nlp::Termination::user_stop ||
+          (s.success() && !test_jump(x_k, s.x, target - p, secant, o_).jump))
+        direct = std::move(s);
+      else
+        result_.corrector_iterations += s.iterations;  // spent, though no point keeps them
+    }
+    if (direct) {
+      step = remaining;
+      p_new = target;
+    } else if (uses_qp) {
       for (;;) {  // steps 2-18 (on a stop request the corrector below refuses to evaluate: user_stop)
         ++point.predictor_attempts;
         step = std::min(trust_, remaining);  // step 2: exact hits without shrinking Delta
@@ -155,10 +173,10 @@ ContinuationResult Run::run(const VectorXd& x0) {
       step = std::min(trivial_step > 0.0 ? trivial_step : o_.fixed_step > 0.0 ? o_.fixed_step : remaining, remaining);
       p_new = step == remaining ? target : p + direction * step;
     }
-    point.trust_region = o_.predictor == Predictor::qp ? trust_ : step;
+    point.trust_region = uses_qp && !direct ? trust_ : step;
     point.parameter = p_new;
     point.on_grid = on_grid(p_new);
-    point.corrector = correct(p_new, x_start, W, &solve_k);
+    point.corrector = direct ? std::move(*direct) : correct(p_new, x_start, W, &solve_k, false);
     point.converged = point.corrector.success();
     point.x = point.corrector.x;
     point.objective = point.corrector.objective;
@@ -178,7 +196,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
         result_.message = "corrector failed at the minimal step at p = " + std::to_string(p_new);
         break;
       }
-      if (o_.predictor == Predictor::qp)
+      if (uses_qp)
         trust_ = std::max(o_.min_trust_region, o_.tau * o_.tau * step);
       else
         trivial_step = std::max(o_.min_trust_region, 0.5 * step);

@@ -8,7 +8,7 @@
 //                 ("multistart": starts, seed, scale) at the seed speeds, continuation of the best
 //                 optima both ways and of every curve jumped to, best point per speed
 //
-//   "continuation": {"predictor": "qp" | "trivial", "fixed_step": 0.2, "min_trust_region": 0.002,
+//   "continuation": {"predictor": "qp" | "trivial" | "trivial_then_qp", "fixed_step": 0.2, "min_trust_region": 0.002,
 //                    "max_trust_region": 0.1, "parameter": "speed", "values": ..., "seed_speeds": [0.3, 1.3, 2.3]}
 //
 // Storage: solution curve c of the continuation is curve_index c (sweep: c + 1, curve 0 holds the
