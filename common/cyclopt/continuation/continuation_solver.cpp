@@ -3,9 +3,9 @@
 #include "cyclopt/continuation/curve_jump.hpp"
 #include "cyclopt/continuation/qp_predictor.hpp"
 #include "cyclopt/nlp/solve.hpp"
+#include "cyclopt/nlp/wall_clock.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -14,11 +14,11 @@ namespace cyclopt::continuation {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using nlp::Clock;
+using nlp::seconds_since;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 void check_parameters(const std::vector<double>& p) {
   if (p.size() < 2) throw std::invalid_argument("parameters: need p_0 and at least one further value");

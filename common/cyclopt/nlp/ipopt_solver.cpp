@@ -5,12 +5,12 @@
 #include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/lagrangian_bfgs.hpp"
+#include "cyclopt/nlp/wall_clock.hpp"
 
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <optional>
@@ -20,7 +20,6 @@
 namespace cyclopt::nlp {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Ipopt::Index;
 using Ipopt::Number;
 
@@ -35,7 +34,6 @@ std::mutex& ipopt_mutex() {
 // Beyond Ipopt's nlp_{lower,upper}_bound_inf (+-1e19): "no bound".
 constexpr Number kIpoptInfinity = 2e19;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // eval_h's values: the lower triangle of the symmetric H, row by row (the pattern eval_h declares).
 void write_lower_triangle(const Eigen::MatrixXd& H, Number* values) {

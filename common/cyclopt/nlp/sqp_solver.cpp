@@ -7,10 +7,10 @@
 #include "cyclopt/nlp/kkt_measures.hpp"
 #include "cyclopt/nlp/l1_merit.hpp"
 #include "cyclopt/nlp/sqp_subproblems.hpp"
+#include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/qp/convex_solve.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -21,7 +21,6 @@
 namespace cyclopt::nlp {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -67,7 +66,7 @@ class SqpRun {
   void run(const VectorXd& x0);
 
  private:
-  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  double elapsed() const { return seconds_since(start_); }
   VectorXd project(const VectorXd& x) const { return x.cwiseMax(lower_).cwiseMin(upper_); }
   LinearisationPoint here() const { return {current_, x_, lower_, upper_}; }
   void stop(Termination t, std::string message) {

@@ -20,9 +20,10 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec) {
 }
 
 int parse_coarse_points(const nlohmann::json& c, int fallback) {
-  const int points = optional_integer(c, "continuation", "coarse_points", 0, 20000).value_or(fallback);
-  if (points > 0 && points < 25)
-    throw SpecError("continuation.coarse_points", "must be 0 (off) or in " + range_text(25, 20000) + ", got " + std::to_string(points));
+  const int points = optional_integer(c, "continuation", "coarse_points", 0, kMaxGaitPoints).value_or(fallback);
+  if (points > 0 && points < kMinGaitPoints)
+    throw SpecError("continuation.coarse_points", "must be 0 (off) or in " + range_text(kMinGaitPoints, kMaxGaitPoints) +
+                                                      ", got " + std::to_string(points));
   return points;
 }
 

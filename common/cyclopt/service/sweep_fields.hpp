@@ -27,7 +27,7 @@ struct SweepFields {
 // Reads spec["continuation"] when present; throws SpecError naming the field.
 SweepFields parse_sweep_fields(const nlohmann::json& spec);
 // continuation.coarse_points of the "continuation" object c: 0 (off) or a grid of P points in
-// [25, 20000] like "points"; `fallback` when absent. Throws SpecError naming the field.
+// [kMinGaitPoints, kMaxGaitPoints] like "points"; `fallback` when absent. Throws SpecError naming the field.
 int parse_coarse_points(const nlohmann::json& c, int fallback);
 // The "continuation" block with every field (for the resolved spec, resolved_spec.hpp).
 nlohmann::json sweep_fields_json(const SweepFields& fields);

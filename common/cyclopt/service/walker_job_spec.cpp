@@ -38,7 +38,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
                                    std::to_string(kMaxWalkingSpeed) + "])");
   job.speeds = sweep ? parse_value_range(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)
                      : std::vector<double>{number_value(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)};
-  job.constants.points = optional_integer(spec, "", "points", 25, 20000).value_or(job.constants.points);
+  job.constants.points = optional_integer(spec, "", "points", kMinGaitPoints, kMaxGaitPoints).value_or(job.constants.points);
   job.constants.bezier_degree = optional_integer(spec, "", "bezier_degree", 3, 10).value_or(job.constants.bezier_degree);
   job.problem.objective = common.objective.value_or(job.problem.objective);
   if (spec.contains("quadrature"))

@@ -33,6 +33,7 @@
 namespace cyclopt::service {
 
 inline constexpr double kMinWalkingSpeed = 0.1, kMaxWalkingSpeed = 3.0;  // m/s
+inline constexpr int kMinGaitPoints = 25, kMaxGaitPoints = 20000;    // P of (5.93), "points"
 
 struct WalkerJob {
   foot::FootSpec foot;

@@ -2,13 +2,13 @@
 
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -18,10 +18,10 @@
 namespace cyclopt::studies {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using nlp::Clock;
+using nlp::seconds_since;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string rho_text(double rho) {
   char buf[32];

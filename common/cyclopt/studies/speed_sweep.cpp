@@ -2,11 +2,11 @@
 
 #include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -23,9 +23,9 @@ using continuation::CurveJump;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using nlp::Clock;
+using nlp::seconds_since;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
