@@ -9,11 +9,14 @@
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
+#include "spec_rejection.hpp"
 
 #include <gtest/gtest.h>
 
 namespace cyclopt::service {
 namespace {
+
+using cyclopt::testing::rejection;
 
 // The seed's section 10.2 problem at one speed: P2 with a density, HM-relevant parameters free.
 nlohmann::json design_spec() {
@@ -25,16 +28,6 @@ nlohmann::json design_spec() {
           {"speed", 2.3},
           {"free_parameters", {"h_F", "l_HA", "l_HM", "l_MT", "k_HM", "k_MT"}},
           {"design_bounds", nlohmann::json::object()}};
-}
-
-// "field: message" of the rejection, or "accepted".
-std::string rejection(const nlohmann::json& spec) {
-  try {
-    validate_job_spec(spec, builtin_job_kinds());
-  } catch (const SpecError& e) {
-    return e.field() + " | " + e.what();
-  }
-  return "accepted";
 }
 
 bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -62,7 +55,7 @@ TEST(DesignSpecs, NegativeDensityIsRejectedWithItsRange) {
   nlohmann::json s = design_spec();
   s["foot"]["density"] = -5.0;
   const std::string r = rejection(s);
-  EXPECT_TRUE(mentions(r, "foot.density |")) << r;
+  EXPECT_TRUE(r.rfind("foot.density: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "1e-06") || mentions(r, "0.000001")) << r;
   EXPECT_TRUE(mentions(r, "1000")) << r;
 }
@@ -72,23 +65,23 @@ TEST(DesignSpecs, BoundsThatExcludeTheStartFootAreRejectedWithTheAdmissibleRange
   s["free_parameters"] = {"l_HA", "l_HM", "k_HM", "k_MT"};  // h_F fixed at 106.5 mm
   s["design_bounds"] = {{"toe_within_height", false}};
   std::string r = rejection(s);
-  EXPECT_TRUE(mentions(r, "design_bounds.h_F_max |")) << r;
+  EXPECT_TRUE(r.rfind("design_bounds.h_F_max: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "0.1065")) << r;
   EXPECT_TRUE(mentions(r, "admissible")) << r;
   s["design_bounds"] = {{"h_F_max", 0.11}};  // holds, but l_MT = 112.4 mm > h_F and l_MT is fixed
   r = rejection(s);
-  EXPECT_TRUE(mentions(r, "design_bounds.toe_within_height |")) << r;
+  EXPECT_TRUE(r.rfind("design_bounds.toe_within_height: ", 0) == 0) << r;
   s = design_spec();
   s["design_bounds"] = {{"l_HM_max", 0.05}};  // below l_HA = 76.5 mm: no convex start foot
   r = rejection(s);
-  EXPECT_TRUE(mentions(r, "design_bounds |")) << r;
+  EXPECT_TRUE(r.rfind("design_bounds: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "l_HA")) << r;
   s["design_bounds"] = {{"h_F_max", -0.1}};
   r = rejection(s);
-  EXPECT_TRUE(mentions(r, "design_bounds.h_F_max |")) << r;
+  EXPECT_TRUE(r.rfind("design_bounds.h_F_max: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "0.5")) << r;
   s["design_bounds"] = {{"l_MT_max", 0.1}};
-  EXPECT_TRUE(mentions(rejection(s), "design_bounds.l_MT_max |")) << rejection(s);  // unknown key, lists the known
+  EXPECT_TRUE(rejection(s).rfind("design_bounds.l_MT_max: ", 0) == 0) << rejection(s);  // unknown key, lists the known
   EXPECT_TRUE(mentions(rejection(s), "k_MT_max")) << rejection(s);
 }
 
@@ -98,18 +91,18 @@ TEST(DesignSpecs, FreeParametersTheModelLacksOrThatFollowTheGeometryAreRejected)
   s["foot"]["density"] = 20.0;
   s["free_parameters"] = {"h_F", "l_MT"};  // HM has no toe
   std::string r = rejection(s);
-  EXPECT_TRUE(mentions(r, "free_parameters[1] |")) << r;
+  EXPECT_TRUE(r.rfind("free_parameters[1]: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "k_HM")) << r;  // the admissible names are listed
   s["free_parameters"] = {"h_F", "m_F"};
   r = rejection(s);
-  EXPECT_TRUE(mentions(r, "free_parameters[1] |")) << r;
+  EXPECT_TRUE(r.rfind("free_parameters[1]: ", 0) == 0) << r;
   EXPECT_TRUE(mentions(r, "density")) << r;
   s["free_parameters"] = {"m_T"};  // bounds without a free foot parameter
   r = rejection(s);
-  EXPECT_TRUE(mentions(r, "design_bounds |")) << r;
+  EXPECT_TRUE(r.rfind("design_bounds: ", 0) == 0) << r;
   s["foot"] = "point";
   s["free_parameters"] = nlohmann::json::array();
-  EXPECT_TRUE(mentions(rejection(s), "design_bounds |")) << rejection(s);
+  EXPECT_TRUE(rejection(s).rfind("design_bounds: ", 0) == 0) << rejection(s);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "memq_server_fixture.hpp"
+#include "spec_rejection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,16 +23,7 @@
 namespace cyclopt {
 namespace {
 
-// "field: message" of the rejection of a spec by the built-in kinds, or "accepted".
-std::string rejection(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  try {
-    service::validate_job_spec(spec, kinds);
-  } catch (const SpecError& e) {
-    return e.field() + ": " + e.what();
-  }
-  return "accepted";
-}
+using testing::rejection;
 
 nlohmann::json design_spec() { return {{"scene", "walker"}, {"task", "foot_design"}}; }
 

@@ -10,6 +10,7 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
+#include "spec_rejection.hpp"
 #include "point_table.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@ namespace cyclopt {
 namespace {
 
 namespace ff = foot_fit;
+using testing::rejection;
 
 // Three trials of `preset` at 200 Hz with `noise` per marker coordinate, as cyclopt-foot synth
 // writes them, reduced to their ankle tracks.
@@ -36,16 +38,6 @@ std::vector<ff::AnkleTrack> synthetic_tracks(const std::string& preset, double n
     tracks.push_back(ff::ankle_track(ff::synthetic_trial(spec, o)));
   }
   return tracks;
-}
-
-std::string rejection(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  try {
-    service::validate_job_spec(spec, kinds);
-  } catch (const SpecError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 using FootFitJobs = testing::MemqServerTest;

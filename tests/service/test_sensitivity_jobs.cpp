@@ -7,6 +7,7 @@
 #include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "memq_server_fixture.hpp"
+#include "spec_rejection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,21 +19,11 @@
 namespace cyclopt {
 namespace {
 
+using testing::rejected_field;
+
 nlohmann::json sensitivity_spec() {
   return {{"scene", "walker"}, {"task", "sensitivity"}, {"foot", "point"}, {"speed", 1.0},
           {"parameters", {"l_O", "m_T"}}, {"relative_range", 0.1}, {"steps", 2}};
-}
-
-// The field of the SpecError the built-in kinds throw for `spec`, or "accepted".
-std::string rejected_field(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  try {
-    service::validate_job_spec(spec, kinds);
-  } catch (const SpecError& e) {
-    std::printf("%s\n", e.what());
-    return e.field();
-  }
-  return "accepted";
 }
 
 TEST(SensitivityJobSpec, RefusesBadFieldsNamingThem) {

@@ -5,6 +5,7 @@
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
+#include "spec_rejection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,18 +20,8 @@ nlohmann::json walker_spec(const std::string& task) {
           {"solver", {{"max_iterations", 600}}}};
 }
 
+using testing::rejection;
 using WalkerJobs = testing::MemqServerTest;
-
-// "field: message" of the rejection of a spec by the built-in kinds, or "accepted".
-std::string rejection(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
-  try {
-    service::validate_job_spec(spec, kinds);
-  } catch (const SpecError& e) {
-    return e.field() + ": " + e.what();
-  }
-  return "accepted";
-}
 
 TEST_F(WalkerJobs, EvaluateStoresTheStartingGait) {
   const auto rows = run_job("eval-1", walker_spec("evaluate"), 1);
