@@ -70,45 +70,49 @@ void expect_same_grid_optima(const ContinuationResult& reference, const Continua
   EXPECT_EQ(compared, grid_size);
 }
 
+// Point feet from their 1.0 m/s optimum over kSpeeds; *jacobians (if given) counts the
+// evaluations with derivatives.
+const std::vector<double> kSpeeds{1.0, 1.1, 1.2, 1.3};
+ContinuationResult continue_point_feet(const ContinuationOptions& o, int* jacobians) {
+  const PointFeet& pf = point_feet();
+  const ParametricProblem family = walker_family(pf.model, pf.problem, "speed");
+  int uncounted = 0;
+  int& count = jacobians ? *jacobians : uncounted;
+  const ParametricProblem counted{family.parameter_name,
+                                  [&](double p) { return std::make_unique<CountingProblem>(family.at(p), count); }};
+  ContinuationResult r = continue_solution(counted, pf.start.z, kSpeeds, o);
+  print(r);
+  return r;
+}
+
 }  // namespace
 
 TEST(WalkerContinuation, OnePredictorHessianPerPointFollowsTheSameCurveForFewerJacobians) {
-  const PointFeet& pf = point_feet();
-  ASSERT_TRUE(pf.start.summary.success());
-  const ParametricProblem family = walker_family(pf.model, pf.problem, "speed");
-  const std::vector<double> grid{1.0, 1.1, 1.2, 1.3};
+  ASSERT_TRUE(point_feet().start.summary.success());
   std::map<bool, ContinuationResult> runs;
   std::map<bool, int> jacobians;
   for (const bool reuse : {false, true}) {
-    const ParametricProblem counted{family.parameter_name, [&](double p) {
-                                      return std::make_unique<CountingProblem>(family.at(p), jacobians[reuse]);
-                                    }};
     ContinuationOptions o;
     o.reuse_predictor_hessian = reuse;
-    runs[reuse] = continue_solution(counted, pf.start.z, grid, o);
-    print(runs[reuse]);
+    runs[reuse] = continue_point_feet(o, &jacobians[reuse]);
     ASSERT_TRUE(runs[reuse].finished) << runs[reuse].message;
   }
   std::printf("Jacobians: per try %d, per point %d\n", jacobians[false], jacobians[true]);
-  expect_same_grid_optima(runs[false], runs[true], grid.size());
+  expect_same_grid_optima(runs[false], runs[true], kSpeeds.size());
   EXPECT_LT(jacobians[true], jacobians[false]);
 }
 
 // Point feet: the direct steps of 0.1 m/s stay on the QP predictor's curve.
 TEST(WalkerContinuation, TrivialThenQpReachesTheQpOptimaByDirectSteps) {
-  const PointFeet& pf = point_feet();
-  ASSERT_TRUE(pf.start.summary.success());
-  const ParametricProblem family = walker_family(pf.model, pf.problem, "speed");
-  const std::vector<double> grid{1.0, 1.1, 1.2, 1.3};
+  ASSERT_TRUE(point_feet().start.summary.success());
   std::map<Predictor, ContinuationResult> runs;
   for (const Predictor predictor : {Predictor::qp, Predictor::trivial_then_qp}) {
     ContinuationOptions o;
     o.predictor = predictor;
-    runs[predictor] = continue_solution(family, pf.start.z, grid, o);
-    print(runs[predictor]);
+    runs[predictor] = continue_point_feet(o, nullptr);
     ASSERT_TRUE(runs[predictor].finished) << runs[predictor].message;
   }
-  expect_same_grid_optima(runs[Predictor::qp], runs[Predictor::trivial_then_qp], grid.size());
+  expect_same_grid_optima(runs[Predictor::qp], runs[Predictor::trivial_then_qp], kSpeeds.size());
   EXPECT_EQ(runs[Predictor::trivial_then_qp].predictor_steps, 0);
   EXPECT_GT(runs[Predictor::qp].predictor_steps, 0);
 }
