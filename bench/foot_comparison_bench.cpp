@@ -50,9 +50,23 @@ class MemoryJobContext final : public service::JobContext {
     return true;
   }
   std::set<storage::PointKey> already_stored_points() override { return keys_; }
+  // A foot's sweep summary (the unit's checkpoint, service/sweep_checkpoints.hpp) is printed as it
+  // arrives, so a run stopped before the last foot still shows the feet it swept.
   void store_checkpoint(const std::string& key, const std::string& value) override {
     const std::lock_guard<std::mutex> lock(mutex_);
     checkpoints_[key] = value;
+    const nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
+    if (!j.is_object() || !j.contains("f_mech") || !j.contains("name")) return;
+    std::string f_mech;
+    for (const nlohmann::json& f : j["f_mech"]) {
+      char number[32] = " -";
+      if (f.is_number()) std::snprintf(number, sizeof number, " %.6f", f.get<double>());
+      f_mech += number;
+    }
+    std::printf("[%7.1f s] swept %s: %d speeds with a KKT point in %.1f s; f_mech per speed:%s\n", elapsed(),
+                j["name"].get<std::string>().c_str(), j["speeds_found"].get<int>(),
+                j["seconds"].is_number() ? j["seconds"].get<double>() : std::nan(""), f_mech.c_str());
+    std::fflush(stdout);
   }
   std::map<std::string, std::string> stored_checkpoints() override {
     const std::lock_guard<std::mutex> lock(mutex_);
