@@ -19,7 +19,6 @@ using nlp::seconds_since;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-
 void check_parameters(const std::vector<double>& p) {
   if (p.size() < 2) throw std::invalid_argument("parameters: need p_0 and at least one further value");
   const double direction = p[1] - p[0];

@@ -34,7 +34,6 @@ std::mutex& ipopt_mutex() {
 // Beyond Ipopt's nlp_{lower,upper}_bound_inf (+-1e19): "no bound".
 constexpr Number kIpoptInfinity = 2e19;
 
-
 // eval_h's values: the lower triangle of the symmetric H, row by row (the pattern eval_h declares).
 void write_lower_triangle(const Eigen::MatrixXd& H, Number* values) {
   for (Index i = 0, k = 0; i < H.rows(); ++i)
