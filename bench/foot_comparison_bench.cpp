@@ -1,7 +1,8 @@
 // The 16-foot comparison of seed 001 section 9.2 end to end as one foot_comparison job (the job
 // kind's run() on an in-memory job context, as a worker runs it), with its wall time, and the
 // mean saving of the best fitted foot against point feet beside the seed's ~60 % (64 % for P2
-// shoes HMT, section 9.2.3). Writes the job document (as `cyclopt export` would) and the two
+// shoes HMT, section 9.2.3). The feet are swept as the server's local executor sweeps them: as
+// many at once as the machine has cores (run_units_in_parallel). Writes the job document (as `cyclopt export` would) and the two
 // figures (foot_comparison, foot_outlines) into OUT_DIR.
 //
 //   foot_comparison_bench SPEEDS STARTS SEED_SPEEDS POINTS OUT_DIR [FEET]
@@ -13,7 +14,9 @@
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/service/foot_comparison_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,17 +26,20 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace {
 
 using namespace cyclopt;
 
-// Keeps every stored point in memory; never stops.
+// Keeps every stored point in memory; never stops. Takes calls from the units' threads at once.
 class MemoryJobContext final : public service::JobContext {
  public:
+  explicit MemoryJobContext(int unit_threads) : unit_threads_(unit_threads) {}
   std::int64_t job_id() const override { return 1; }
   const service::JobLimits& limits() const override { return limits_; }
   void report_progress(const service::ProgressReport& r) override {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (r.message != last_) std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), (last_ = r.message).c_str());
   }
   void count_iterations(int n) override { iterations += n; }
@@ -42,6 +48,7 @@ class MemoryJobContext final : public service::JobContext {
     curves.push_back({{"curve", index}, {"name", name}, {"parameter_name", parameter}});
   }
   bool store_point(const storage::SolutionPoint& p) override {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (!keys_.insert(p.key).second) return false;
     solutions.push_back({{"curve", p.key.curve_index}, {"point", p.key.point_index},
                          {"parameter", std::isfinite(p.parameter) ? nlohmann::json(p.parameter) : nlohmann::json()},
@@ -49,7 +56,10 @@ class MemoryJobContext final : public service::JobContext {
                          {"status", p.status}, {"values", p.values}});
     return true;
   }
-  std::set<storage::PointKey> already_stored_points() override { return keys_; }
+  std::set<storage::PointKey> already_stored_points() override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return keys_;
+  }
   // A foot's sweep summary (the unit's checkpoint, service/sweep_checkpoints.hpp) is printed as it
   // arrives, so a run stopped before the last foot still shows the feet it swept.
   void store_checkpoint(const std::string& key, const std::string& value) override {
@@ -73,12 +83,16 @@ class MemoryJobContext final : public service::JobContext {
     return checkpoints_;
   }
   service::StopReason stop_reason() override { return service::StopReason::none; }
+  void run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) override {
+    service::run_units_in_parallel(units, run, *this, unit_threads_);
+  }
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
-  long long iterations = 0;
+  std::atomic<long long> iterations{0};
   nlohmann::json curves = nlohmann::json::array(), solutions = nlohmann::json::array();
 
  private:
+  int unit_threads_;
   service::JobLimits limits_{1e9, 2000000000};
   std::set<storage::PointKey> keys_;
   std::map<std::string, std::string> checkpoints_;
@@ -117,11 +131,13 @@ int main(int argc, char** argv) {
   const service::ValidatedJobSpec job = service::validate_job_spec(spec, kinds);
   std::printf("foot_comparison_bench: %s; %s at start\nspec: %s\n", bench::machine_line().c_str(),
               bench::load_average().c_str(), spec.dump().c_str());
+  const int unit_threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::printf("feet swept %d at a time (the server's local executor with its default workers)\n", unit_threads);
   const double cpu0 = bench::cpu_seconds();
-  MemoryJobContext ctx;
+  MemoryJobContext ctx(unit_threads);
   job.run(ctx);
   const double wall = ctx.elapsed(), cpu = bench::cpu_seconds() - cpu0;
-  std::printf("wall %.1f s, CPU %.1f s, %lld solver iterations; %s at end\n\n", wall, cpu, ctx.iterations,
+  std::printf("wall %.1f s, CPU %.1f s, %lld solver iterations; %s at end\n\n", wall, cpu, ctx.iterations.load(),
               bench::load_average().c_str());
 
   std::printf("%-26s %7s %11s %7s %9s %8s\n", "foot", "speeds", "mean f_mech", "common", "saving", "sweep s");

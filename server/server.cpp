@@ -8,7 +8,7 @@ namespace {
 
 std::unique_ptr<JobExecutor> make_executor(const ServerConfig& config) {
   if (config.executor == "slurm") return std::make_unique<remote::SlurmExecutor>(config.slurm);
-  return std::make_unique<LocalExecutor>();
+  return std::make_unique<LocalExecutor>(effective_workers(config));
 }
 
 }  // namespace

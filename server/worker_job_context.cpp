@@ -49,11 +49,16 @@ bool WorkerJobContext::store_point(const storage::SolutionPoint& point) {
     added = store_.store_point(job_.id, point);
     checkpoint_time();
   } catch (const storage::StorageError& e) {
-    store_error_ = e.what();
+    record_store_error(e);
     throw;
   }
   if (added) ++points_stored_;
   return added;
+}
+
+void WorkerJobContext::record_store_error(const storage::StorageError& e) {
+  std::lock_guard lock(store_error_mutex_);
+  store_error_ = e.what();
 }
 
 void WorkerJobContext::checkpoint_time() {
@@ -70,7 +75,7 @@ void WorkerJobContext::store_checkpoint(const std::string& key, const std::strin
   try {
     store_.store_checkpoint(job_.id, key, value);
   } catch (const storage::StorageError& e) {  // as for a point: the job is re-queued
-    store_error_ = e.what();
+    record_store_error(e);
     throw;
   }
 }

@@ -4,7 +4,9 @@
 // server's shutdown flag and the job's time and iteration limits (time summed over attempts and
 // checkpointed to the store every few seconds, so a kill -9 loses at most that much).
 // report_progress, count_iterations and stop_reason may be called from several threads at once
-// (a multistart's solves); the rest from the job's worker thread.
+// (a multistart's solves), and so may store_point, already_stored_points, store_checkpoint and
+// stored_checkpoints (work units run in parallel by the local executor); announce and add_curve
+// from the job's worker thread.
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/storage/job_record.hpp"
@@ -51,13 +53,17 @@ class WorkerJobContext final : public service::JobContext {
     return elapsed_seconds() - recorded_seconds_;
   }
   // Why the last store_point failed ("" if none did): the job is then re-queued, not failed.
-  const std::string& store_error() const { return store_error_; }
+  std::string store_error() {
+    std::lock_guard lock(store_error_mutex_);
+    return store_error_;
+  }
   double publish_seconds() const { return publish_seconds_; }
   int points_stored() const { return points_stored_; }
   bool complete() const { return points_total_ >= 0 && points_stored_ >= points_total_; }
 
  private:
   void publish(const service::ProgressReport& report);
+  void record_store_error(const storage::StorageError& e);
   void checkpoint_time();
   std::chrono::steady_clock::time_point last_checkpoint();
   static constexpr std::chrono::seconds kCheckpointInterval{5};
@@ -78,9 +84,10 @@ class WorkerJobContext final : public service::JobContext {
   std::mutex checkpoint_mutex_;  // last_checkpoint_, recorded_seconds_
   std::chrono::steady_clock::time_point last_checkpoint_ = start_;
   double recorded_seconds_ = 0.0;  // of this attempt, in the store
+  std::mutex store_error_mutex_;
   std::string store_error_;
   int points_total_ = -1;
-  int points_stored_ = 0;
+  std::atomic<int> points_stored_{0};
   int points_at_start_ = 0;  // stored by earlier attempts
   double publish_seconds_ = 0.0;
 };

@@ -1,12 +1,17 @@
 // Work units (service/unit_job_context.hpp, issue 18): a unit's checkpoints live in its job's under
 // "unit/<id>/" and it reads back only its own; its points and curves are the job's; it may not
 // announce or split again; run_units_here runs units in order, stops with the job and names the
-// unit that failed.
+// unit that failed; run_units_in_parallel runs them at once, each exactly once, and a failed unit
+// stops the one beside it and fails the job.
 #include "cyclopt/service/unit_job_context.hpp"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -24,16 +29,33 @@ class MemoryJob final : public JobContext {
   void add_curve(int curve, const std::string&, const std::string&) override { curves.push_back(curve); }
   bool store_point(const storage::SolutionPoint& p) override { return points.insert(p.key).second; }
   std::set<storage::PointKey> already_stored_points() override { return points; }
-  void store_checkpoint(const std::string& key, const std::string& value) override { checkpoints[key] = value; }
-  std::map<std::string, std::string> stored_checkpoints() override { return checkpoints; }
+  void store_checkpoint(const std::string& key, const std::string& value) override {
+    const std::lock_guard<std::mutex> lock(mutex);  // units in parallel store at once
+    checkpoints[key] = value;
+  }
+  std::map<std::string, std::string> stored_checkpoints() override {
+    const std::lock_guard<std::mutex> lock(mutex);
+    return checkpoints;
+  }
   StopReason stop_reason() override { return stop; }
 
   JobLimits limits_;
   std::vector<int> curves;
   std::set<storage::PointKey> points;
   std::map<std::string, std::string> checkpoints;
-  StopReason stop = StopReason::none;
+  std::atomic<StopReason> stop{StopReason::none};
+  std::mutex mutex;
 };
+
+// Waits up to 10 s for `done`; false on timeout (so a broken runner fails the test, not hangs it).
+template <class Done>
+bool wait_for(Done done) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!done())
+    if (std::chrono::steady_clock::now() > until) return false;
+    else std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return true;
+}
 
 TEST(UnitJobContext, KeepsCheckpointsPerUnitAndPointsInTheJob) {
   MemoryJob job;
@@ -85,6 +107,62 @@ TEST(UnitJobContext, RunUnitsHereRunsInOrderStopsWithTheJobAndNamesAFailedUnit) 
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "work unit foot-1: no starting gait at 0.3 m/s");
   }
+}
+
+TEST(UnitJobContext, RunUnitsInParallelRunsTwoAtOnceEachExactlyOnce) {
+  MemoryJob job;
+  std::atomic<int> running{0}, most{0};
+  std::mutex mutex;
+  std::multiset<std::string> ran;
+  const std::vector<WorkUnit> units{{"foot-0", 0}, {"foot-1", 1}, {"foot-2", 2}, {"foot-3", 3}, {"foot-4", 4}};
+  run_units_in_parallel(units, [&](const WorkUnit& u, JobContext& ctx) {
+    const int now = ++running;
+    most = std::max(most.load(), now);
+    // A unit waits until a second one runs beside it (the last unit has no partner left).
+    wait_for([&] { return most.load() >= 2 || u.index == 4; });
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      ran.insert(u.id);
+    }
+    ctx.store_checkpoint("done", std::to_string(u.index));
+    --running;
+  }, job, 2);
+  EXPECT_EQ(most.load(), 2);
+  EXPECT_EQ(ran, (std::multiset<std::string>{"foot-0", "foot-1", "foot-2", "foot-3", "foot-4"}));
+  for (const WorkUnit& u : units) EXPECT_EQ(job.checkpoints.at("unit/" + u.id + "/done"), std::to_string(u.index));
+}
+
+TEST(UnitJobContext, RunUnitsInParallelStopsTheSiblingOfAFailedUnitAndNamesIt) {
+  MemoryJob job;
+  std::atomic<bool> sibling_saw_stop{false};
+  std::atomic<int> started{0};
+  const std::vector<WorkUnit> units{{"foot-0", 0}, {"foot-1", 1}, {"foot-2", 2}, {"foot-3", 3}};
+  try {
+    run_units_in_parallel(units, [&](const WorkUnit& u, JobContext& ctx) {
+      ++started;
+      if (u.index == 0) {
+        wait_for([&] { return started.load() >= 2; });  // foot-1 is running
+        throw std::runtime_error("no starting gait at 0.3 m/s");
+      }
+      sibling_saw_stop = wait_for([&] { return ctx.stop_reason() != StopReason::none; });
+    }, job, 2);
+    ADD_FAILURE() << "a failed unit did not fail the job";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "work unit foot-0: no starting gait at 0.3 m/s");
+  }
+  EXPECT_TRUE(sibling_saw_stop.load());
+  EXPECT_EQ(started.load(), 2);  // foot-2 and foot-3 never started
+  EXPECT_EQ(job.stop_reason(), StopReason::none);  // the job's own reason is untouched
+}
+
+TEST(UnitJobContext, RunUnitsInParallelStopsWithTheJob) {
+  MemoryJob job;
+  std::atomic<int> started{0};
+  const std::vector<WorkUnit> units{{"foot-0", 0}, {"foot-1", 1}, {"foot-2", 2}, {"foot-3", 3}};
+  run_units_in_parallel(units, [&](const WorkUnit&, JobContext&) {
+    if (++started == 2) job.stop = StopReason::shutdown;
+  }, job, 2);
+  EXPECT_LE(started.load(), 3);  // at most the unit the other thread had already taken
 }
 
 }  // namespace

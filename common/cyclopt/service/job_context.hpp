@@ -1,6 +1,8 @@
 #pragma once
 // The interface a running job sees (implemented by the server's worker; tests implement it in
-// memory). All methods are called from the job's own worker thread.
+// memory). All methods are called from the job's own worker thread, except where an executor runs
+// a job's work units on several threads (run_units_in_parallel, unit_job_context.hpp): that
+// executor's context takes calls from all of them at once.
 
 #include "cyclopt/service/progress_report.hpp"
 #include "cyclopt/storage/solution_point.hpp"

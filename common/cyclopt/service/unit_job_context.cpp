@@ -1,12 +1,22 @@
 #include "cyclopt/service/unit_job_context.hpp"
 
+#include <algorithm>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace cyclopt::service {
 
 std::string unit_checkpoint_prefix(const std::string& unit_id) { return "unit/" + unit_id + "/"; }
 
-UnitJobContext::UnitJobContext(JobContext& job, const WorkUnit& unit) : job_(job), prefix_(unit_checkpoint_prefix(unit.id)) {}
+UnitJobContext::UnitJobContext(JobContext& job, const WorkUnit& unit, const std::atomic<bool>* abandoned)
+    : job_(job), prefix_(unit_checkpoint_prefix(unit.id)), abandoned_(abandoned) {}
+
+StopReason UnitJobContext::stop_reason() {
+  if (abandoned_ && abandoned_->load()) return StopReason::cancelled;
+  return job_.stop_reason();
+}
 
 void UnitJobContext::announce(int) {
   throw std::logic_error("work unit '" + prefix_ + "' announced points: its job announces the points of all its units");
@@ -37,6 +47,36 @@ void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobC
       throw std::runtime_error("work unit " + unit.id + ": " + e.what());
     }
   }
+}
+
+void run_units_in_parallel(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job, int threads) {
+  const std::size_t n = std::min(units.size(), static_cast<std::size_t>(std::max(threads, 1)));
+  if (n <= 1) return run_units_here(units, run, job);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::mutex error_mutex;
+  std::string error;  // of the first unit that threw
+  const auto work = [&] {
+    for (std::size_t i = next++; i < units.size() && !failed.load() && job.stop_reason() == StopReason::none; i = next++) {
+      UnitJobContext ctx(job, units[i], &failed);
+      std::string what;
+      try {
+        run(units[i], ctx);
+        continue;
+      } catch (const std::exception& e) {
+        what = e.what();
+      } catch (...) {
+        what = "unknown exception";
+      }
+      const std::lock_guard<std::mutex> lock(error_mutex);
+      if (!failed.exchange(true)) error = "work unit " + units[i].id + ": " + what;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < n; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (failed.load()) throw std::runtime_error(error);
 }
 
 void JobContext::run_units(const std::vector<WorkUnit>& units, const UnitRun& run) { run_units_here(units, run, *this); }

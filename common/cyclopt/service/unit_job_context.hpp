@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <stdexcept>
 
 namespace cyclopt::service {
@@ -18,7 +19,9 @@ std::string unit_checkpoint_prefix(const std::string& unit_id);
 
 class UnitJobContext final : public JobContext {
  public:
-  UnitJobContext(JobContext& job, const WorkUnit& unit);
+  // `abandoned` (optional): set when a sibling unit running at the same time failed; this unit then
+  // sees StopReason::cancelled and ends as a stopped unit would (its journal kept for the retry).
+  UnitJobContext(JobContext& job, const WorkUnit& unit, const std::atomic<bool>* abandoned = nullptr);
 
   std::int64_t job_id() const override { return job_.job_id(); }
   const JobLimits& limits() const override { return job_.limits(); }
@@ -33,13 +36,14 @@ class UnitJobContext final : public JobContext {
   std::set<storage::PointKey> already_stored_points() override { return job_.already_stored_points(); }
   void store_checkpoint(const std::string& key, const std::string& value) override;
   std::map<std::string, std::string> stored_checkpoints() override;  // this unit's, without the prefix
-  StopReason stop_reason() override { return job_.stop_reason(); }
+  StopReason stop_reason() override;
   // Units do not split again: throws std::logic_error.
   void run_units(const std::vector<WorkUnit>& units, const UnitRun& run) override;
 
  private:
   JobContext& job_;
   std::string prefix_;
+  const std::atomic<bool>* abandoned_;
 };
 
 // The checkpoint `key` that `unit` left as its result (among the job's `stored` checkpoints), parsed
@@ -58,5 +62,12 @@ auto unit_result(const std::map<std::string, std::string>& stored, const WorkUni
 
 // JobContext::run_units' default: each unit in turn on this thread, until the job stops.
 void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job);
+
+// The same on up to `threads` threads at once (this one among them), each taking the next unit
+// that has not started: units are independent by contract (the Slurm executor runs them all at
+// once too), so only the job's context is shared, and it must take calls from `threads` threads
+// at once. The first unit that throws fails the job (std::runtime_error naming the unit) once
+// the units running beside it have stopped; no unit starts after it. threads <= 1: run_units_here.
+void run_units_in_parallel(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job, int threads);
 
 }  // namespace cyclopt::service
