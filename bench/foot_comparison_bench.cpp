@@ -14,6 +14,7 @@
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/service/foot_comparison_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/service/sweep_checkpoints.hpp"
 #include "cyclopt/service/unit_job_context.hpp"
 
 #include <atomic>
@@ -60,22 +61,22 @@ class MemoryJobContext final : public service::JobContext {
     const std::lock_guard<std::mutex> lock(mutex_);
     return keys_;
   }
-  // A foot's sweep summary (the unit's checkpoint, service/sweep_checkpoints.hpp) is printed as it
-  // arrives, so a run stopped before the last foot still shows the feet it swept.
+  // A foot's sweep summary (its unit's result checkpoint, foot_comparison_kind.hpp) is printed as
+  // it arrives, so a run stopped before the last foot still shows the feet it swept.
   void store_checkpoint(const std::string& key, const std::string& value) override {
     const std::lock_guard<std::mutex> lock(mutex_);
     checkpoints_[key] = value;
-    const nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
-    if (!j.is_object() || !j.contains("f_mech") || !j.contains("name")) return;
+    const std::string suffix = service::kSweptFootCheckpoint;
+    if (key.size() < suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0) return;
+    const studies::FootSweepSummary s = service::foot_sweep_from_json(nlohmann::json::parse(value));
     std::string f_mech;
-    for (const nlohmann::json& f : j["f_mech"]) {
+    for (const double f : s.f_mech) {
       char number[32] = " -";
-      if (f.is_number()) std::snprintf(number, sizeof number, " %.6f", f.get<double>());
+      if (std::isfinite(f)) std::snprintf(number, sizeof number, " %.6f", f);
       f_mech += number;
     }
     std::printf("[%7.1f s] swept %s: %d speeds with a KKT point in %.1f s; f_mech per speed:%s\n", elapsed(),
-                j["name"].get<std::string>().c_str(), j["speeds_found"].get<int>(),
-                j["seconds"].is_number() ? j["seconds"].get<double>() : std::nan(""), f_mech.c_str());
+                s.name.c_str(), s.speeds_found, s.seconds, f_mech.c_str());
     std::fflush(stdout);
   }
   std::map<std::string, std::string> stored_checkpoints() override {

@@ -2,8 +2,12 @@
 // "unit/<id>/" and it reads back only its own; its points and curves are the job's; it may not
 // announce or split again; run_units_here runs units in order, stops with the job and names the
 // unit that failed; run_units_in_parallel runs them at once, each exactly once, and a failed unit
-// stops the one beside it and fails the job.
+// stops the one beside it and fails the job; a comparison's foot unit counts in its progress the
+// feet already swept, whichever unit swept them.
 #include "cyclopt/service/unit_job_context.hpp"
+
+#include "cyclopt/service/foot_comparison_kind.hpp"
+#include "cyclopt/service/job_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +27,10 @@ class MemoryJob final : public JobContext {
  public:
   std::int64_t job_id() const override { return 7; }
   const JobLimits& limits() const override { return limits_; }
-  void report_progress(const ProgressReport&) override {}
+  void report_progress(const ProgressReport& r) override {
+    const std::lock_guard<std::mutex> lock(mutex);
+    reports.push_back(r);
+  }
   void count_iterations(int) override {}
   void announce(int) override {}
   void add_curve(int curve, const std::string&, const std::string&) override { curves.push_back(curve); }
@@ -42,6 +49,7 @@ class MemoryJob final : public JobContext {
   JobLimits limits_;
   std::vector<int> curves;
   std::set<storage::PointKey> points;
+  std::vector<ProgressReport> reports;
   std::map<std::string, std::string> checkpoints;
   std::atomic<StopReason> stop{StopReason::none};
   std::mutex mutex;
@@ -163,6 +171,35 @@ TEST(UnitJobContext, RunUnitsInParallelStopsWithTheJob) {
     if (++started == 2) job.stop = StopReason::shutdown;
   }, job, 2);
   EXPECT_LE(started.load(), 3);  // at most the unit the other thread had already taken
+}
+
+// Units may run at once or in any order: a foot unit's progress counts the speeds of the feet whose
+// best points are stored, not of the feet before it in the list. Foot 1 (curve 2) is swept here
+// before foot 0 (point feet) runs.
+TEST(UnitJobContext, AComparisonFootUnitsProgressCountsTheFeetAlreadySwept) {
+  JobKindRegistry kinds;
+  kinds.add(foot_comparison_kind());
+  const ValidatedJobSpec spec = validate_job_spec({{"scene", "walker"},
+                                                   {"task", "foot_comparison"},
+                                                   {"speeds", "1.0:0.1:1.1"},
+                                                   {"points", 50},
+                                                   {"feet", {"P1-shoes-left-HM-SG"}},
+                                                   {"multistart", {{"starts", 2}, {"seed", 3}, {"scale", 0.02}}},
+                                                   {"continuation", {{"seed_speeds", 1.0}}}},
+                                                  kinds);
+  MemoryJob job;
+  job.points = {{2, 0}, {2, 1}};
+  const WorkUnit unit{"foot-0", 0};
+  UnitJobContext ctx(job, unit);
+  spec.kind->run_unit(*spec.spec, unit, ctx);
+  ASSERT_FALSE(job.reports.empty());
+  for (const ProgressReport& r : job.reports) {
+    EXPECT_EQ(r.points_total, 4);  // two feet, two speeds
+    EXPECT_GE(r.points_done, 2) << r.message;  // foot 1's two speeds
+    EXPECT_LE(r.points_done, 4) << r.message;
+  }
+  EXPECT_EQ(job.reports.back().points_done, 4);  // and both of its own
+  EXPECT_TRUE(job.points.count({1, 0}) && job.points.count({1, 1}));  // its best points, curve 1 + 0
 }
 
 }  // namespace

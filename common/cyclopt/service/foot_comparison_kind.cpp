@@ -86,14 +86,22 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
 
 // Each foot's sweep is a work unit "foot-<k>" (issue 18; k = 0 the reference): it stores the
 // foot's best point per speed as curve 1 + k as soon as its sweep ends, then its summary as the
-// unit's checkpoint kSweptFoot, which the job reads to compare the feet. Within a unit the sweep
-// keeps its journal (sweep_checkpoints.hpp), so an interrupted unit resumes where it was.
-constexpr const char* kSweptFoot = "swept foot";
-
+// unit's checkpoint kSweptFootCheckpoint, which the job reads to compare the feet. Within a unit
+// the sweep keeps its journal (sweep_checkpoints.hpp), so an interrupted unit resumes where it was.
 std::string foot_unit_id(std::size_t k) { return "foot-" + std::to_string(k); }
 
+// How many of the job's `feet` are swept: their best points (curves 1..feet) are stored.
+int feet_swept(JobContext& ctx, int feet) {
+  std::set<int> curves;
+  for (const storage::PointKey& key : ctx.already_stored_points())
+    if (key.curve_index >= 1 && key.curve_index <= feet) curves.insert(key.curve_index);
+  return static_cast<int>(curves.size());
+}
+// A unit's progress reports recount the swept feet at most this often (a query of the store).
+constexpr std::chrono::seconds kFeetSweptRecount{2};
+
 void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
-  if (ctx.stored_checkpoints().count(kSweptFoot)) return;  // swept by an earlier attempt
+  if (ctx.stored_checkpoints().count(kSweptFootCheckpoint)) return;  // swept by an earlier attempt
   if (unit.index < 0 || static_cast<std::size_t>(unit.index) >= job.feet.size())
     throw std::logic_error("foot_comparison: no foot " + std::to_string(unit.index) + " in the job");
   const std::size_t k = static_cast<std::size_t>(unit.index);
@@ -105,19 +113,27 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   studies::SpeedSweepOptions o = sweep_options(job.walker, job.sweeps, job.walker.starts);
   o.continuation.corrector.should_stop = stop_predicate(ctx);
   o.journal = sweep_journal(ctx);
-  // Progress names the foot and the phase of its sweep; points and ETA count the feet after it
-  // as if swept one after another at this foot's pace.
+  // Progress names the foot and the phase of its sweep. Points count the grid speeds of the feet
+  // already swept (their best points are stored, whichever unit swept them: units may run at
+  // once) and of this foot; the ETA counts the feet not yet swept as if swept one after another
+  // at this foot's pace (an upper bound where units run in parallel).
   const auto started = std::chrono::steady_clock::now();
+  auto counted = started - kFeetSweptRecount;
+  int swept = 0;
   PhaseProgress progress(ctx, {.curve_id = 1 + unit.index, .points_total = feet * speeds});
   o.continuation.corrector.on_iteration = progress.iterations();
-  o.on_progress = [&](const studies::SweepProgress& sp) {
+  o.on_progress = [&](const studies::SweepProgress& sp) {  // one call at a time (speed_sweep.hpp)
+    if (const auto now = std::chrono::steady_clock::now(); now - counted >= kFeetSweptRecount) {
+      swept = feet_swept(ctx, feet);
+      counted = now;
+    }
     ProgressReport r = sweep_progress_report(sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " +
                                                      job.feet[k].name);
     r.curve_id = 1 + unit.index;
-    r.points_done = unit.index * speeds + sp.speeds_reached;
+    r.points_done = swept * speeds + sp.speeds_reached;
     r.points_total = feet * speeds;
     const double per_foot = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + sp.eta_seconds;
-    r.eta_seconds = sp.eta_seconds + static_cast<double>(feet - 1 - unit.index) * per_foot;
+    r.eta_seconds = sp.eta_seconds + static_cast<double>(std::max(0, feet - 1 - swept)) * per_foot;
     progress.set(r);
   };
   const studies::FootSweepSummary s = studies::sweep_foot(job.feet[k].name, model, job.walker.problem, o, [&](const studies::CurvePoint&) {
@@ -126,7 +142,7 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   if (s.stopped || ctx.stop_reason() != StopReason::none) return;  // the next attempt resumes from the journal
   const studies::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   for (const storage::SolutionPoint& p : best_points(family, s, 1 + unit.index)) ctx.store_point(p);
-  ctx.store_checkpoint(kSweptFoot, foot_sweep_to_json(s).dump());
+  ctx.store_checkpoint(kSweptFootCheckpoint, foot_sweep_to_json(s).dump());
 }
 
 void run_comparison(const ComparisonJob& job, JobContext& ctx) {
@@ -145,7 +161,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
   const std::map<std::string, std::string> stored = ctx.stored_checkpoints();
   std::vector<studies::FootSweepSummary> swept;
   for (const WorkUnit& unit : units)
-    swept.push_back(unit_result(stored, unit, kSweptFoot, [](const nlohmann::json& j) { return foot_sweep_from_json(j); }));
+    swept.push_back(unit_result(stored, unit, kSweptFootCheckpoint, [](const nlohmann::json& j) { return foot_sweep_from_json(j); }));
   const studies::FootComparisonResult r = studies::summarise_feet(job.walker.speeds, std::move(swept), 0);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::map<int, std::vector<storage::SolutionPoint>> best_of;  // curve 1 + k's points, of the feet best somewhere

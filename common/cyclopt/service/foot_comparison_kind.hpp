@@ -24,4 +24,9 @@ namespace cyclopt::service {
 
 JobKind foot_comparison_kind();
 
+// The checkpoint each foot's work unit leaves as its result, under the unit's prefix
+// ("unit/foot-<k>/", unit_job_context.hpp): the foot's sweep summary as foot_sweep_to_json
+// (sweep_checkpoints.hpp) writes it.
+inline constexpr const char* kSweptFootCheckpoint = "swept foot";
+
 }  // namespace cyclopt::service
