@@ -39,9 +39,13 @@ class MemoryJobContext final : public service::JobContext {
   explicit MemoryJobContext(int unit_threads) : unit_threads_(unit_threads) {}
   std::int64_t job_id() const override { return 1; }
   const service::JobLimits& limits() const override { return limits_; }
+  // Prints a report whose message and phase differ from the last of its curve (feet swept at once
+  // report in turns).
   void report_progress(const service::ProgressReport& r) override {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (r.message != last_) std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), (last_ = r.message).c_str());
+    std::string& last = last_line_[r.curve_id];
+    const std::string line = r.message + (r.phase.empty() ? "" : " - " + r.phase);
+    if (line != last) std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), (last = line).c_str());
   }
   void count_iterations(int n) override { iterations += n; }
   void announce(int) override {}
@@ -98,7 +102,7 @@ class MemoryJobContext final : public service::JobContext {
   std::set<storage::PointKey> keys_;
   std::map<std::string, std::string> checkpoints_;
   std::mutex mutex_;
-  std::string last_;
+  std::map<int, std::string> last_line_;  // per curve
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
