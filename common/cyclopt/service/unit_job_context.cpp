@@ -37,21 +37,11 @@ void UnitJobContext::run_units(const std::vector<WorkUnit>&, const UnitRun&) {
   throw std::logic_error("work unit '" + prefix_ + "' split into units: units do not split again");
 }
 
-void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job) {
-  for (const WorkUnit& unit : units) {
-    if (job.stop_reason() != StopReason::none) return;
-    UnitJobContext ctx(job, unit);
-    try {
-      run(unit, ctx);
-    } catch (const std::exception& e) {
-      throw std::runtime_error("work unit " + unit.id + ": " + e.what());
-    }
-  }
-}
+namespace {
 
-void run_units_in_parallel(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job, int threads) {
-  const std::size_t n = std::min(units.size(), static_cast<std::size_t>(std::max(threads, 1)));
-  if (n <= 1) return run_units_here(units, run, job);
+// Units on `threads` threads (this one among them; 1: none started), each taking the next unit that
+// has not started, until all ran, the job stops or a unit throws; then throws the first failure.
+void run_units_on(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job, std::size_t threads) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::mutex error_mutex;
@@ -73,10 +63,20 @@ void run_units_in_parallel(const std::vector<WorkUnit>& units, const UnitRun& ru
     }
   };
   std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < n; ++t) pool.emplace_back(work);
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
   if (failed.load()) throw std::runtime_error(error);
+}
+
+}  // namespace
+
+void run_units_here(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job) {
+  run_units_on(units, run, job, 1);
+}
+
+void run_units_in_parallel(const std::vector<WorkUnit>& units, const UnitRun& run, JobContext& job, int threads) {
+  run_units_on(units, run, job, std::min(units.size(), static_cast<std::size_t>(std::max(threads, 1))));
 }
 
 void JobContext::run_units(const std::vector<WorkUnit>& units, const UnitRun& run) { run_units_here(units, run, *this); }
