@@ -68,6 +68,33 @@ TEST(Multistart, ReproducibleRegardlessOfThreadCountAndMergesDuplicates) {
   }
 }
 
+TEST(Multistart, RestartsTakeARunThatStoppedEarlyToItsKktPoint) {
+  // Two SQP iterations per solve do not reach a minimum from (2, -2); solving again from the
+  // final point a few times does, and the run adds up the work of every solve.
+  MultistartOptions o;
+  o.num_threads = 1;
+  o.solver.solver = SolverKind::sqp;
+  o.solver.max_iterations = 2;
+  const auto factory = [] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(); };
+  const std::vector<Eigen::VectorXd> start{Eigen::Vector2d(2.0, -2.0)};
+  const MultistartResult once = multistart_from(factory, start, o);
+  ASSERT_FALSE(once.runs[0].success()) << once.runs[0].message;
+  o.restarts = 30;
+  const MultistartResult restarted = multistart_from(factory, start, o);
+  const SolverSummary& run = restarted.runs[0];
+  ASSERT_TRUE(run.success()) << run.message;
+  EXPECT_EQ(restarted.successes, 1);
+  EXPECT_GT(run.iterations, 2);
+  EXPECT_NE(run.message.find("restart"), std::string::npos) << run.message;
+  o.restarts = 0;
+  o.solver.max_iterations = 500;
+  const MultistartResult unlimited = multistart_from(factory, start, o);  // the optimum one solve reaches
+  ASSERT_TRUE(unlimited.runs[0].success()) << unlimited.runs[0].message;
+  EXPECT_LT((run.x - unlimited.runs[0].x).lpNorm<Eigen::Infinity>(), 1e-4);
+  o.restarts = -1;
+  EXPECT_THROW(multistart_from(factory, start, o), std::invalid_argument);
+}
+
 TEST(Multistart, RejectsBadOptions) {
   MultistartOptions o;
   o.num_starts = 0;
