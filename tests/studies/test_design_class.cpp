@@ -93,6 +93,24 @@ TEST(DesignClass, ShortFastStepsAreAStilt) {
   EXPECT_NEAR(c.step_frequency, 38.0, 1e-9);
 }
 
+TEST(DesignClass, TheSeedsRho10DesignStepsFastButIsNoStilt) {
+  // Table 10.1, rho = 10: the seed's best design. Its optimal gait at 2.3 m/s (the design
+  // problem's KKT point from this foot, bench/results/foot_design_bench.txt) rolls from the heel
+  // over most of the sole with 0.42 m steps at 5.46 Hz - faster than human walking, far from the
+  // stilt's 38 Hz, and admissible.
+  foot::FootSpec high;
+  high.model = foot::FootModel::hm;
+  high.parameters.resize(foot::hm::count);
+  high.parameters << 0.1, 0.1095, 0.4, 1e-8, 0.32, 1e-8;  // h_F, l_HA, l_HM, k_H, k_HM, k_M
+  high.density = 10.0;
+  const auto m = walker::make_walker_model(high);
+  const auto g = constructed_gait(m, angle_at_contact_fraction(m, 0.0), angle_at_contact_fraction(m, 0.8), 1.0 / 5.46,
+                                  0.42, [](double s, double) { return -0.21 + 0.42 * s; });
+  const DesignClassification c = classify_design(m, g);
+  EXPECT_EQ(c.design_class, DesignClass::admissible) << c.reason;
+  EXPECT_GT(c.foot_area, kStiltArea);
+}
+
 TEST(DesignClass, AFootWithoutAreaIsAStilt) {
   foot::FootSpec rod;
   rod.model = foot::FootModel::hm;

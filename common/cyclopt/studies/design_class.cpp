@@ -53,7 +53,7 @@ DesignClassification classify_design(const walker::WalkerModel<double>& model, c
 
   if (c.foot_area < kStiltArea || c.step_frequency > kStiltFrequency) {
     c.design_class = DesignClass::stilt;
-    c.reason = measured("stilt: foot area %.3g m^2 (< 1e-4 makes a stilt), step frequency %.3g Hz (> 5 makes a stilt)",
+    c.reason = measured("stilt: foot area %.3g m^2 (< 1e-4 makes a stilt), step frequency %.3g Hz (> 15 makes a stilt)",
                         c.foot_area, c.step_frequency);
   } else if (c.ankle_travel > kWheelRolling * step && c.leg_swing < kWheelLegSwing * step) {
     c.design_class = DesignClass::wheel;
