@@ -72,12 +72,17 @@ TEST(FootDesignSpec, RefusesBadDesignSpecsNamingTheFieldAndRange) {
   s["start"] = {1.0};
   EXPECT_EQ(rejection(s).rfind("start", 0), 0u) << rejection(s);
   s = design_spec();
+  s["foot_scale"] = 5;
+  EXPECT_EQ(rejection(s).rfind("foot_scale", 0), 0u) << rejection(s);
+  EXPECT_NE(rejection(s).find("3"), std::string::npos) << rejection(s);  // the admissible range
+  s = design_spec();
   s["references"] = "yes";
   EXPECT_EQ(rejection(s).rfind("references", 0), 0u) << rejection(s);
 }
 
-// A design small enough for a unit test: one density, two design starts at 2.3 m/s (of seed 2:
-// the first reaches a KKT point in 489 iterations, the second stops at MaxIter = 500), two speeds,
+// A design small enough for a unit test: one density, two design starts at 2.3 m/s from the start
+// foot (foot_scale 0; of seed 2 the first reaches a KKT point in 489 iterations, the second stops
+// at MaxIter = 500 and is restarted from there, nlp::MultistartOptions::restarts), two speeds,
 // P = 50, one start per sweep at one seed speed, correctors of at most 60 iterations and
 // Delta_min = 0.05, so the free-foot continuation, which stalls near 2.28 m/s (section 10.2,
 // bench/results/foot_design_bench.txt), gives up after a few tries.
@@ -91,6 +96,7 @@ nlohmann::json small_design() {
           {"solver", {{"max_iterations", 500}}},
           {"multistart", {{"starts", 2}, {"seed", 2}, {"scale", 0.02}}},
           {"sweep_starts", 1},
+          {"foot_scale", 0},
           {"continuation", {{"seed_speeds", 2.3}, {"min_trust_region", 0.05}, {"corrector_max_iterations", 60}}}};
 }
 

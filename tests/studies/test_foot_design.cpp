@@ -1,10 +1,12 @@
 // The foot-design study's option checks (studies/foot_design.hpp): each bad option is refused
 // before anything is solved, naming the option.
 #include "cyclopt/studies/foot_design.hpp"
+#include "cyclopt/foot/convexity_constraints.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 using namespace cyclopt;
@@ -46,6 +48,9 @@ TEST(FootDesign, RefusesBadOptionsNamingThem) {
   o = small();
   o.starts = 0;
   EXPECT_EQ(refusal(p2(), o).rfind("starts:", 0), 0u);
+  o = small();
+  o.foot_scale = -1;
+  EXPECT_EQ(refusal(p2(), o).rfind("foot_scale:", 0), 0u) << refusal(p2(), o);
   EXPECT_EQ(refusal(foot::foot_preset("point").spec, small()).rfind("foot:", 0), 0u);
 }
 
@@ -55,4 +60,37 @@ TEST(FootDesign, RefusesBoundsThatExcludeTheStartFootInAFixedParameter) {
   FootDesignOptions o = small();
   o.free_parameters = {"l_HM", "k_HM"};
   EXPECT_EQ(refusal(p2(), o).rfind("design_bounds:", 0), 0u) << refusal(p2(), o);
+}
+
+TEST(FootDesign, DrawnStartFeetVaryTheFreeParametersWithinBoundsAndConvexity) {
+  foot::FootSpec start = p2();
+  const foot::DesignBounds bounds;
+  const std::vector<std::string> all{"h_F", "l_HA", "l_HM", "l_MT", "gamma_F", "k_H", "k_HM", "k_MT", "k_T"};
+  start.parameters = foot::project_into_design_bounds(start.model, start.parameters, bounds, all);
+  const auto layout = foot::parameter_layout(start.model);
+  const foot::LinearInequalities convex = foot::convexity_constraints(start.model);
+  std::mt19937_64 rng(7);
+  double k_HM_min = 1e9, k_HM_max = 0;
+  for (int draw = 0; draw < 200; ++draw) {
+    const foot::FootParameters<double> p = draw_design_foot(start, all, bounds, 1.0, rng);
+    EXPECT_TRUE(foot::violated_design_bounds(start.model, p, bounds, 1e-12).empty()) << p.transpose();
+    EXPECT_TRUE(((convex.A * p + convex.b).array() >= 0.0).all()) << p.transpose();
+    EXPECT_GT(foot::toe_convexity_margin(p), 0.0) << p.transpose();
+    for (std::size_t k = 0; k < layout.size(); ++k) {
+      EXPECT_GE(p[static_cast<Eigen::Index>(k)], layout[k].min) << layout[k].name;
+      EXPECT_LE(p[static_cast<Eigen::Index>(k)], layout[k].max) << layout[k].name;
+    }
+    k_HM_min = std::min(k_HM_min, p[foot::hmt::k_HM]);
+    k_HM_max = std::max(k_HM_max, p[foot::hmt::k_HM]);
+  }
+  // exp(N(0,1)) spreads k_HM = 0.054 over more than a factor 5 (the seed's rho 10 design has 0.32).
+  EXPECT_GT(k_HM_max / k_HM_min, 5.0);
+  // Only the free parameters move; scale 0 keeps the start foot.
+  const foot::FootParameters<double> some = draw_design_foot(start, {"k_HM"}, bounds, 1.0, rng);
+  for (Eigen::Index i = 0; i < some.size(); ++i) {
+    if (i != foot::hmt::k_HM) {
+      EXPECT_EQ(some[i], start.parameters[i]) << layout[static_cast<std::size_t>(i)].name;
+    }
+  }
+  EXPECT_EQ(draw_design_foot(start, all, bounds, 0.0, rng), start.parameters);
 }

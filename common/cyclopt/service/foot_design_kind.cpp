@@ -39,6 +39,7 @@ struct DesignJob {
   double design_speed = kDefaultDesignSpeed;
   bool references = true;
   int sweep_starts = 20;
+  double foot_scale = studies::FootDesignOptions{}.foot_scale;  // design starts' drawn feet
   SweepFields sweeps;
 };
 
@@ -57,7 +58,8 @@ std::vector<std::string> foot_parameter_names(foot::FootModel model) {
 DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& common_fields) {
   DesignJob j;
   nlohmann::json walker = spec;
-  for (const char* key : {"densities", "design_speed", "references", "sweep_starts", "continuation"}) walker.erase(key);
+  for (const char* key : {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation"})
+    walker.erase(key);
   if (!walker.contains("foot")) walker["foot"] = kDefaultStartFoot;
   if (!walker.contains("speeds")) walker["speeds"] = kDefaultSpeeds;
   j.start_foot = foot_value(walker["foot"], "foot");
@@ -102,6 +104,7 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
     j.references = spec["references"].get<bool>();
   }
   j.sweep_starts = optional_integer(spec, "", "sweep_starts", 1, 1000).value_or(j.sweep_starts);
+  j.foot_scale = optional_number(spec, "", "foot_scale", 0.0, 3.0).value_or(j.foot_scale);
   j.sweeps = parse_sweep_fields(spec);
   return j;
 }
@@ -297,6 +300,7 @@ studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   o.starts = job_.walker.starts;
   o.seed = job_.walker.seed;
   o.scale = job_.walker.scale;
+  o.foot_scale = job_.foot_scale;
   o.bounds = *job_.walker.problem.design_bounds;
   o.free_parameters = job_.walker.problem.free_parameters;
   o.references = job_.references;
@@ -454,6 +458,7 @@ nlohmann::json design_job_json(const DesignJob& j) {
   r["design_speed"] = j.design_speed;
   r["references"] = j.references;
   r["sweep_starts"] = j.sweep_starts;
+  r["foot_scale"] = j.foot_scale;
   r["continuation"] = sweep_fields_json(j.sweeps);
   return r;
 }
@@ -472,7 +477,7 @@ JobKind foot_design_kind() {
   std::vector<std::string> fields;
   for (const std::string& f : walker_job_fields(true))
     if (f != "start") fields.push_back(f);
-  fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "continuation"});
+  fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation"});
   return with_work_units<DesignJob>(typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job,
                                                               run_design, design_job_json, design_cost),
                                     [](const DesignJob& job, const WorkUnit& unit, JobContext& ctx) {

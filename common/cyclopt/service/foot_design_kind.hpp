@@ -13,7 +13,9 @@
 // its own masses; densities (kg/m^2, default 10:10:70); design_speed (m/s, one of the speeds,
 // default 2.3); speeds (default 0.3:0.1:2.3); multistart: starts (default 20), seed and scale of
 // the design multistart, seed and scale of the sweeps too; sweep_starts: multistart runs per seed
-// speed of every fixed-foot sweep (default 20); free_parameters: the foot parameters designed
+// speed of every fixed-foot sweep (default 20); foot_scale: the spread of the feet the design
+// starts draw around the start foot (studies::FootDesignOptions::foot_scale, default 1, 0: none);
+// free_parameters: the foot parameters designed
 // (default all of the model's; only foot parameters); design_bounds: (10.1) (design_bounds_spec.hpp,
 // default the seed's); references: sweep the start foot and point feet (default true; false: no
 // savings); continuation: seed_speeds and min_trust_region of the sweeps and the continuation;
