@@ -72,6 +72,28 @@ TEST(FootComparisonFigures, EveryFootTheReferenceAndTheEnvelope) {
     for (const std::string& path : plot::write_figure(f, dir.string())) EXPECT_GT(std::filesystem::file_size(path), 1000u);
 }
 
+TEST(FootComparisonFigures, SeventeenCurvesStayApartByColourOrDash) {
+  // The default comparison: point feet and the 16 feet of section 9.2. Ten colours repeat, so the
+  // feet after the tenth are dashed; no two feet look alike, and none like the reference.
+  plot::FootComparisonCurves c;
+  for (int k = 0; k < 17; ++k) {
+    plot::ComparedFootCurve f;
+    f.name = "foot " + std::to_string(k);
+    f.reference = k == 0;
+    f.speed = {1.0, 1.5};
+    f.f_mech = {0.02 + 0.001 * k, 0.03};
+    c.feet.push_back(f);
+  }
+  const plot::LineChart chart = plot::foot_comparison_chart(c);
+  ASSERT_EQ(chart.series.size(), 17u);
+  for (std::size_t a = 0; a < chart.series.size(); ++a)
+    for (std::size_t b = a + 1; b < chart.series.size(); ++b) {
+      const plot::Series &sa = chart.series[a], &sb = chart.series[b];
+      const bool same_colour = sa.color->r == sb.color->r && sa.color->g == sb.color->g && sa.color->b == sb.color->b;
+      EXPECT_FALSE(same_colour && sa.dashed == sb.dashed) << sa.label << " and " << sb.label;
+    }
+}
+
 TEST(FootComparisonFigures, RejectsOtherJobs) {
   nlohmann::json d = comparison_document();
   d["task"] = "sweep";

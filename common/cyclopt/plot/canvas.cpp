@@ -20,7 +20,7 @@ void set_color(cairo_t* cr, Color c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, 
 }  // namespace
 
 Color palette(int index) {
-  static constexpr std::array<Color, 10> kTab10 = {{{0.122, 0.467, 0.706, 1},
+  static constexpr std::array<Color, kPaletteSize> kTab10 = {{{0.122, 0.467, 0.706, 1},
                                                     {1.000, 0.498, 0.055, 1},
                                                     {0.173, 0.627, 0.173, 1},
                                                     {0.839, 0.153, 0.157, 1},

@@ -20,7 +20,9 @@ struct Color {
   double r = 0, g = 0, b = 0, a = 1;
 };
 
-// Ten well-separated colours for curves (the "tab10" palette).
+// Ten well-separated colours for curves (the "tab10" palette); index k and k + kPaletteSize
+// share a colour.
+inline constexpr int kPaletteSize = 10;
 Color palette(int index);
 
 struct Point {

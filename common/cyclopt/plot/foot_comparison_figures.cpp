@@ -73,8 +73,12 @@ LineChart foot_comparison_chart(const FootComparisonCurves& c) {
     if (f.speed.empty()) continue;
     Series s{f.name + (f.reference ? " (reference)" : " (" + percent(f.saving) + ")") + (f.best_fitted ? ", best" : ""),
              f.speed, f.f_mech, false, f.reference, std::nullopt};
-    if (f.reference) s.color = Color{0, 0, 0, 1};
-    else s.color = palette(colour++);
+    if (f.reference) {
+      s.color = Color{0, 0, 0, 1};
+    } else {  // the 11th foot on repeats the palette's colours, dashed (the seed compares 16 feet)
+      s.dashed = colour >= kPaletteSize;
+      s.color = palette(colour++);
+    }
     chart.series.push_back(std::move(s));
   }
   if (!c.envelope_speed.empty())
