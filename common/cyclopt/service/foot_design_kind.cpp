@@ -216,16 +216,16 @@ void DesignUnit::store_multistart(int k, const studies::DensityDesign& d) {
 }
 
 void DesignUnit::store_free_foot(int k, const studies::DensityDesign& d) {
-  const continuation::ParametricProblem family = studies::walker_family(d.model, d.problem, "speed");
+  const continuation::ParametricProblem family = studies::walker_family(d.free_foot_model, d.free_foot_problem, "speed");
   for (std::size_t i = 0; i < d.free_foot.points.size(); ++i) {
     const continuation::CurvePoint& c = d.free_foot.points[i];
     storage::SolutionPoint p = point_of(family, c, {records::free_foot_curve(k), static_cast<int>(i)});
     p.required = false;  // the continuation may stop before the lowest speed (section 10.2)
     records::DesignPointRecord r;
     r.density = d.density;
-    walker::GaitProblemOptions at = d.problem;
+    walker::GaitProblemOptions at = d.free_foot_problem;
     at.speed = c.parameter;
-    r.foot = designed_foot(walker::GaitProblem(d.model, at).model_at(c.x));
+    r.foot = designed_foot(walker::GaitProblem(d.free_foot_model, at).model_at(c.x));
     p.values.update(nlohmann::json(r));
     store(p);
   }

@@ -50,6 +50,27 @@ SpeedSweepOptions journaled(const FootDesignOptions& o, const std::string& part,
   return so;
 }
 
+// Curvature parameters at or below this are sharp corners (the seed's designs: k_H = k_T = 1e-8,
+// Table 10.1).
+constexpr double kCornerCurvature = 1e-6;
+
+// The parameters the free-foot continuation (step 2) frees: the design's, but its sharp corners.
+// f depends on a corner's k about like log k (at the rho 10 design, 2.3 m/s: df/dk_T = -86 at
+// k_T = 3e-12, -0.37 at 2.3e-9; k df/dk ~ 1e-9), so the SQP's KKT test in k never settles: from
+// that design no corrector converged within 300 iterations even 0.002 m/s away; with k_H and k_T
+// fixed at the design's values in 4 (2.298 m/s), 17 (2.2) and 43 (2.0) iterations.
+std::vector<std::string> free_foot_parameters(const walker::WalkerModel<double>& design, const std::vector<std::string>& free) {
+  const auto layout = foot::parameter_layout(design.foot_model);
+  std::vector<std::string> moving;
+  for (const std::string& name : free) {
+    const auto at = std::find_if(layout.begin(), layout.end(), [&](const foot::ParameterInfo& i) { return i.name == name; });
+    const bool corner = at != layout.end() && name.rfind("k_", 0) == 0 &&
+                        design.foot_parameters[at - layout.begin()] <= kCornerCurvature;
+    if (!corner) moving.push_back(name);
+  }
+  return moving;
+}
+
 // Saving of `foot` against `reference` (foot_comparison.hpp), NaN without a reference sweep.
 double saving(const std::vector<double>& speeds, const FootSweepSummary& reference, const FootSweepSummary& foot) {
   if (reference.f_mech.empty() || foot.f_mech.empty()) return kNaN;
@@ -168,6 +189,9 @@ DensityDesign DesignStudy::at(double rho) {
   mo.objective_tolerance = o_.objective_tolerance;
   mo.restarts = kDesignRestarts;
   mo.x_tolerance = o_.x_tolerance;
+  // No coarse-to-fine batches as in the sweeps (SpeedSweepOptions::coarse_points): measured at
+  // rho 10 (8 starts, seed 1, foot_scale 1), P = 100 first reached 1/8 KKT points (560 s beside a
+  // benchmark) where P = 200 alone reaches 3/8 (130 s idle).
   journal_multistart(mo, journal, 0);
   if (o_.on_multistart_progress)
     mo.on_progress = [&](int done, double best) { o_.on_multistart_progress(rho, done, best); };
@@ -200,17 +224,25 @@ DensityDesign DesignStudy::at(double rho) {
   if (grid.size() >= 2) {
     ContinuationOptions co = o_.sweep.continuation;
     co.corrector.max_iterations = std::min(co.corrector.max_iterations, o_.sweep.corrector_max_iterations);
-    const ParametricProblem family = walker_family(model, po, "speed");
-    // Run n of the journal, or computed (and recorded unless the job stopped it).
+    // The design's foot with its sharp corners fixed (free_foot_parameters), and the design's gait.
+    d.free_foot_model = shape.model_at(best.z);
+    d.free_foot_problem = po;
+    d.free_foot_problem.free_parameters = free_foot_parameters(d.free_foot_model, free_);
+    const walker::GaitProblem free_foot(d.free_foot_model, d.free_foot_problem);
+    const Eigen::VectorXd z0 = free_foot.initial_point(best.z.head(gait_count));
+    const ParametricProblem family = walker_family(d.free_foot_model, d.free_foot_problem, "speed");
+    // Run n of the journal (unless recorded in another layout, by a version that freed every
+    // parameter), or computed (and recorded unless the job stopped it).
     const auto run = [&](int n, const Eigen::VectorXd& x0, const std::vector<double>& values,
                          const ContinuationOptions& options) {
-      if (std::optional<ContinuationResult> recorded = journal.find_run ? journal.find_run(n) : std::nullopt)
+      std::optional<ContinuationResult> recorded = journal.find_run ? journal.find_run(n) : std::nullopt;
+      if (recorded && !recorded->points.empty() && recorded->points.front().x.size() == z0.size())
         return std::move(*recorded);
       ContinuationResult computed = continue_solution(family, x0, values, options);
       if (computed.message != "stopped" && journal.record_run) journal.record_run(n, computed);
       return computed;
     };
-    d.free_foot = run(0, best.z, grid, co);
+    d.free_foot = run(0, z0, grid, co);
     // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s);
     // where the QPSQP run stopped, the rest of the grid is tried with the trivial predictor (warm
     // starts at each grid speed) from the lowest converged point.
@@ -233,7 +265,9 @@ DensityDesign DesignStudy::at(double rho) {
     }
     for (const CurvePoint& p : d.free_foot.points) {
       if (!p.converged) continue;
-      const walker::GaitProblem at(model, free_problem(p.parameter));
+      walker::GaitProblemOptions at_speed = d.free_foot_problem;
+      at_speed.speed = p.parameter;
+      const walker::GaitProblem at(d.free_foot_model, at_speed);
       const walker::PeriodicGait<double> g = at.gait_at(p.x);
       for (std::size_t i = 0; i < o_.sweep.speeds.size(); ++i)
         if (std::abs(o_.sweep.speeds[i] - p.parameter) <= 1e-12 && g.real) d.free_foot_f_mech[i] = g.f_mech;

@@ -9,7 +9,8 @@
 //      distinct optimum is classified (design_class.hpp: stilt, wheel, no rolling, admissible) and
 //      the best admissible one is the density's design;
 //   2. free-foot continuation: the design continued with QPSQP over the speed grid, downwards from
-//      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange); where the
+//      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange) but for the
+//      sharp corners of the design (k <= 1e-6 stays at its value, as k_H, k_T in Table 10.1); where the
 //      QPSQP run stops, the rest of the grid with the trivial predictor (warm starts);
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
 //      grid speed reached (Fig. 10.2a green and blue), each started from that foot's optimal gait
@@ -98,6 +99,10 @@ struct DensityDesign {
   int best = -1;                          // index of the best admissible optimum, -1 if none
   int class_counts[4] = {0, 0, 0, 0};     // optima per DesignClass
   ContinuationResult free_foot;           // step 2 (empty without a design)
+  // Step 2's problem: the design's foot (free_foot's x holds its free parameters; those with a
+  // sharp corner, k <= 1e-6, stay fixed at the design's values) over the speed.
+  walker::WalkerModel<double> free_foot_model;
+  walker::GaitProblemOptions free_foot_problem;
   std::vector<double> free_foot_f_mech;   // per grid speed, NaN where step 2 has no converged point
   foot::FootSpec low_speed_foot;          // optimal at the lowest grid speed step 2 reached
   double low_speed = 0.0;
