@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <random>
@@ -69,6 +70,68 @@ std::vector<std::string> free_foot_parameters(const walker::WalkerModel<double>&
     if (!corner) moving.push_back(name);
   }
   return moving;
+}
+
+// The converged point of `r` at the lowest parameter, nullptr if none.
+const CurvePoint* lowest_converged(const ContinuationResult& r) {
+  const CurvePoint* lowest = nullptr;
+  for (const CurvePoint& p : r.points)
+    if (p.converged && (!lowest || p.parameter < lowest->parameter)) lowest = &p;
+  return lowest;
+}
+
+// The free-foot curve's last resort (step 2): a solve at each of `speeds` (descending), each from
+// the last converged point, by the distant-start solver - W_1 of (6.24) on differences, where the
+// continuation's corrector keeps the predictor's W - with up to kDesignRestarts restarts; a speed
+// without a KKT point is skipped, two in a row end it. From the rho 10 design (corners fixed) such
+// solves converged at 2.0-1.2 m/s in 21-208 iterations and at 1.0 m/s after a restart; at 1.1 and
+// 0.9-0.3 m/s they stopped at MaxIter (the seed: the free-foot problem converges worse below 1 m/s).
+ContinuationResult warm_started_solves(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
+                                       const CurvePoint& from, const std::vector<double>& speeds,
+                                       const nlp::SolverOptions& corrector) {
+  const Clock::time_point t0 = Clock::now();
+  ContinuationResult r;
+  r.next_curve_id = from.curve_id + 1;
+  nlp::MultistartOptions one;
+  one.num_threads = 1;
+  one.restarts = kDesignRestarts;
+  one.solver = walker::distant_start_solver(corrector, 0);
+  Eigen::VectorXd x = from.x;
+  r.finished = true;
+  int failures_in_a_row = 0;
+  for (double v : speeds) {
+    walker::GaitProblemOptions at = problem;
+    at.speed = v;
+    const nlp::SolverSummary s =
+        nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model, at); }, {x}, one).runs.front();
+    if (s.termination == nlp::Termination::user_stop) {
+      r.finished = false;
+      r.message = "stopped";
+      break;
+    }
+    CurvePoint p;
+    p.parameter = v;
+    p.curve_id = from.curve_id;
+    p.on_grid = true;
+    p.converged = s.success();
+    p.x = s.x;
+    p.objective = s.objective;
+    p.corrector = s;
+    p.seconds = s.wall_seconds;
+    r.points.push_back(p);
+    r.corrector_iterations += s.iterations;
+    if (!p.converged) {
+      r.finished = false;
+      r.message = "no KKT point at " + speed_text(v) + " from the last converged point: " + s.message;
+      if (++failures_in_a_row == 2) break;
+      continue;
+    }
+    failures_in_a_row = 0;
+    x = s.x;
+  }
+  if (r.finished) r.message = "reached the last parameter value";
+  r.seconds = seconds_since(t0);
+  return r;
 }
 
 // Saving of `foot` against `reference` (foot_comparison.hpp), NaN without a reference sweep.
@@ -233,23 +296,23 @@ DensityDesign DesignStudy::at(double rho) {
     const ParametricProblem family = walker_family(d.free_foot_model, d.free_foot_problem, "speed");
     // Run n of the journal (unless recorded in another layout, by a version that freed every
     // parameter), or computed (and recorded unless the job stopped it).
-    const auto run = [&](int n, const Eigen::VectorXd& x0, const std::vector<double>& values,
-                         const ContinuationOptions& options) {
+    const auto journaled_run = [&](int n, const std::function<ContinuationResult()>& compute) {
       std::optional<ContinuationResult> recorded = journal.find_run ? journal.find_run(n) : std::nullopt;
       if (recorded && !recorded->points.empty() && recorded->points.front().x.size() == z0.size())
         return std::move(*recorded);
-      ContinuationResult computed = continue_solution(family, x0, values, options);
+      ContinuationResult computed = compute();
       if (computed.message != "stopped" && journal.record_run) journal.record_run(n, computed);
       return computed;
+    };
+    const auto run = [&](int n, const Eigen::VectorXd& x0, const std::vector<double>& values,
+                         const ContinuationOptions& options) {
+      return journaled_run(n, [&] { return continue_solution(family, x0, values, options); });
     };
     d.free_foot = run(0, z0, grid, co);
     // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s);
     // where the QPSQP run stopped, the rest of the grid is tried with the trivial predictor (warm
     // starts at each grid speed) from the lowest converged point.
-    const CurvePoint* last = nullptr;
-    for (const CurvePoint& p : d.free_foot.points)
-      if (p.converged && (!last || p.parameter < last->parameter)) last = &p;
-    if (!d.free_foot.finished && last) {
+    if (const CurvePoint* last = lowest_converged(d.free_foot); !d.free_foot.finished && last) {
       std::vector<double> rest{last->parameter};
       for (double v : grid)
         if (v < last->parameter - 1e-12) rest.push_back(v);
@@ -261,6 +324,22 @@ DensityDesign DesignStudy::at(double rho) {
         d.free_foot.message += "; then the trivial predictor: " + more.message;
         d.free_foot.finished = more.finished;
         d.free_foot.points.insert(d.free_foot.points.end(), more.points.begin() + 1, more.points.end());
+      }
+    }
+    // Where both stopped, warm-started solves at the grid speeds below (warm_started_solves): from
+    // the rho 10 design they reached 1.0 m/s where both runs stopped at 1.22 m/s.
+    if (const CurvePoint* lowest = lowest_converged(d.free_foot); !d.free_foot.finished && lowest) {
+      std::vector<double> rest;
+      for (double v : grid)
+        if (v < lowest->parameter - 1e-12) rest.push_back(v);
+      if (!rest.empty()) {
+        const CurvePoint from = *lowest;
+        ContinuationResult more = journaled_run(2, [&] {
+          return warm_started_solves(d.free_foot_model, d.free_foot_problem, from, rest, co.corrector);
+        });
+        d.free_foot.message += "; then warm-started solves: " + more.message;
+        d.free_foot.finished = more.finished;
+        d.free_foot.points.insert(d.free_foot.points.end(), more.points.begin(), more.points.end());
       }
     }
     for (const CurvePoint& p : d.free_foot.points) {
