@@ -223,7 +223,7 @@ TEST(ResolvedSpec, AFootDesignSpellsOutItsStartFootDesignAndSweepFields) {
   const nlohmann::json r = resolved_fixed_point({{"scene", "walker"}, {"task", "foot_design"}});
   EXPECT_EQ(r["foot"], io::to_json(foot::foot_preset("P2-shoes-left-HMT").spec));
   for (const char* key : {"speeds", "free_parameters", "design_bounds", "densities", "design_speed", "references",
-                          "sweep_starts", "continuation", "solver", "multistart", "points", "bezier_degree"})
+                          "sweep_starts", "foot_scale", "continuation", "solver", "multistart", "points", "bezier_degree"})
     EXPECT_TRUE(r.contains(key)) << key << " missing in " << r.dump();
   EXPECT_EQ(r["design_speed"], 2.3);
   EXPECT_EQ(r["continuation"]["seed_speeds"], (nlohmann::json{0.3, 1.3, 2.3}));
