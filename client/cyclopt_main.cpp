@@ -58,7 +58,8 @@ results database file directly (read-only) when given --db FILE.
          [--reference PRESET] [--starts N] ...
   submit --task foot_fit --trials FILE.trc|FILE.csv,... [--name TEXT] ...
   submit --task foot_design [--foot FILE.json|PRESET] [--densities LIST|LO:STEP:HI]
-         [--design-speed V] [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N] ...
+         [--design-speed V] [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N]
+         [--foot-scale S] ...
   submit --task sensitivity --foot FILE.json|PRESET --speed V [--parameters P,P,...]
          [--relative-range R] [--steps N] ...
                      queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
@@ -129,7 +130,7 @@ struct Options {
       what = "solutions", result, feet, reference, trials, densities, parameters;
   std::vector<std::int64_t> jobs;
   std::vector<std::string> from;
-  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan(""),
+  double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan(""), foot_scale = std::nan(""),
          relative_range = std::nan("");
   int point_delay_ms = -1, starts = -1, sweep_starts = -1, steps = -1;
   bool watch = false;
@@ -161,7 +162,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 // Every option parse_args() knows, for "did you mean" on a misspelled one.
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
-    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--parameters", "--relative-range", "--steps", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
+    "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--foot-scale", "--parameters", "--relative-range", "--steps", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
     "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
@@ -197,6 +198,7 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--design-speed") o.design_speed = number(next());
     else if (a == "--starts") o.starts = static_cast<int>(number(next()));
     else if (a == "--sweep-starts") o.sweep_starts = static_cast<int>(number(next()));
+    else if (a == "--foot-scale") o.foot_scale = number(next());
     else if (a == "--parameters") o.parameters = next();
     else if (a == "--relative-range") o.relative_range = number(next());
     else if (a == "--steps") o.steps = static_cast<int>(number(next()));
@@ -283,7 +285,7 @@ std::string foot_fit_spec_text(const Options& o) {
 }
 
 // foot_design from flags: --foot (the start foot), --densities ("10:10:70" or "10,30,50"),
-// --design-speed, --speeds, --starts (design multistart), --sweep-starts; the rest defaults
+// --design-speed, --speeds, --starts (design multistart), --sweep-starts, --foot-scale; the rest defaults
 // (service/foot_design_kind.hpp).
 std::string foot_design_spec_text(const Options& o) {
   nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_design"}};
@@ -303,6 +305,7 @@ std::string foot_design_spec_text(const Options& o) {
   if (!o.speeds.empty()) spec["speeds"] = o.speeds;
   if (o.starts > 0) spec["multistart"] = {{"starts", o.starts}};
   if (o.sweep_starts > 0) spec["sweep_starts"] = o.sweep_starts;
+  if (std::isfinite(o.foot_scale)) spec["foot_scale"] = o.foot_scale;
   if (!o.name.empty()) spec["name"] = o.name;
   return spec.dump();
 }
@@ -340,8 +343,8 @@ std::string spec_text(const Options& o) {
   if (o.task == "sensitivity") return sensitivity_spec_text(o);
   if (!o.parameters.empty() || std::isfinite(o.relative_range) || o.steps >= 0)
     throw UsageError("--parameters, --relative-range and --steps need --task sensitivity");
-  if (!o.densities.empty() || std::isfinite(o.design_speed) || o.sweep_starts > 0)
-    throw UsageError("--densities, --design-speed and --sweep-starts need --task foot_design");
+  if (!o.densities.empty() || std::isfinite(o.design_speed) || o.sweep_starts > 0 || std::isfinite(o.foot_scale))
+    throw UsageError("--densities, --design-speed, --sweep-starts and --foot-scale need --task foot_design");
   if (!o.trials.empty()) throw UsageError("--trials needs --task foot_fit");
   if (!o.feet.empty() || !o.reference.empty()) throw UsageError("--feet and --reference need --task foot_comparison");
   const bool foot_sweep = !o.sweep.empty() && !o.values.empty();
