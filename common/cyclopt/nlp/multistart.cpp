@@ -10,7 +10,6 @@
 #include <limits>
 #include <mutex>
 #include <stdexcept>
-#include <string>
 #include <thread>
 
 namespace cyclopt::nlp {
@@ -23,24 +22,6 @@ void validate(const MultistartOptions& o) {
   if (!(o.x_tolerance >= 0)) throw std::invalid_argument("MultistartOptions.x_tolerance: must be >= 0");
   if (o.restarts < 0) throw std::invalid_argument("MultistartOptions.restarts: must be >= 0");
   validate(o.solver);
-}
-
-// One run: the solve from x0, then the restarts (MultistartOptions::restarts) from the final point.
-SolverSummary solve_run(Problem& problem, const MultistartOptions& o, const Eigen::VectorXd& x0) {
-  SolverSummary run = solve(problem, o.solver, x0);
-  for (int k = 1; k <= o.restarts && !run.success() && run.termination != Termination::user_stop && run.x.size() > 0 &&
-                  run.x.allFinite();
-       ++k) {
-    SolverSummary again = solve(problem, o.solver, run.x);
-    again.iterations += run.iterations;
-    again.function_evaluations += run.function_evaluations;
-    again.jacobian_evaluations += run.jacobian_evaluations;
-    again.failed_evaluations += run.failed_evaluations;
-    again.wall_seconds += run.wall_seconds;
-    again.message += " (restart " + std::to_string(k) + " after: " + run.message + ")";
-    run = std::move(again);
-  }
-  return run;
 }
 
 bool same_optimum(const SolverSummary& a, const SolverSummary& b, const MultistartOptions& o) {
@@ -99,7 +80,7 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
           continue;
         }
         std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt;
-        run = recorded ? std::move(*recorded) : solve_run(*problem, options, result.starts[static_cast<size_t>(i)]);
+        run = recorded ? std::move(*recorded) : solve_with_restarts(*problem, options.solver, result.starts[static_cast<size_t>(i)], options.restarts);
         if (run.termination == Termination::user_stop) continue;
         const std::lock_guard<std::mutex> lock(finished_mutex);
         if (options.on_run_finished && !recorded) options.on_run_finished(i, run);

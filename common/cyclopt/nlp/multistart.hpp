@@ -32,9 +32,7 @@ struct MultistartOptions {
   double x_tolerance = 1e-4;
   SolverOptions solver;  // for every local solve (on_iteration is called from worker threads)
   // A run that ends without a KKT point (and not stopped) is solved again from its final point, at
-  // most `restarts` times: a fresh solve starts with a fresh Hessian approximation, which takes
-  // runs that stalled near an optimum (MaxFun, no merit decrease) the rest of the way. The run's
-  // summary is the last solve's, with the iterations, evaluations and seconds of all of them. >= 0.
+  // most `restarts` times (solve_with_restarts, solve.hpp). >= 0.
   int restarts = 0;
   // Resume (issue 19 item 5): a run that recorded_run(i) returns is taken as run i instead of
   // being solved (its x is the final point); every run solved here to the end (not stopped by

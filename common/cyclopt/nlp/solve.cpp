@@ -4,6 +4,8 @@
 #include "cyclopt/nlp/sqp_solver.hpp"
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace cyclopt::nlp {
 
@@ -13,6 +15,24 @@ SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen:
     case SolverKind::sqp: return solve_with_sqp(problem, options, x0);
   }
   throw std::invalid_argument("SolverOptions.solver: must be ipopt or sqp");
+}
+
+SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts) {
+  if (restarts < 0) throw std::invalid_argument("restarts: must be >= 0");
+  SolverSummary run = solve(problem, options, x0);
+  for (int k = 1; k <= restarts && !run.success() && run.termination != Termination::user_stop && run.x.size() > 0 &&
+                  run.x.allFinite();
+       ++k) {
+    SolverSummary again = solve(problem, options, run.x);
+    again.iterations += run.iterations;
+    again.function_evaluations += run.function_evaluations;
+    again.jacobian_evaluations += run.jacobian_evaluations;
+    again.failed_evaluations += run.failed_evaluations;
+    again.wall_seconds += run.wall_seconds;
+    again.message += " (restart " + std::to_string(k) + " after: " + run.message + ")";
+    run = std::move(again);
+  }
+  return run;
 }
 
 }  // namespace cyclopt::nlp

@@ -3,6 +3,7 @@
 #include "cyclopt/foot/convexity_constraints.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/nlp/solve.hpp"
 #include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
@@ -92,18 +93,15 @@ ContinuationResult warm_started_solves(const walker::WalkerModel<double>& model,
   const Clock::time_point t0 = Clock::now();
   ContinuationResult r;
   r.next_curve_id = from.curve_id + 1;
-  nlp::MultistartOptions one;
-  one.num_threads = 1;
-  one.restarts = kDesignRestarts;
-  one.solver = walker::distant_start_solver(corrector, 0);
+  const nlp::SolverOptions solver = walker::distant_start_solver(corrector, 0);
   Eigen::VectorXd x = from.x;
   r.finished = true;
   int failures_in_a_row = 0;
   for (double v : speeds) {
     walker::GaitProblemOptions at = problem;
     at.speed = v;
-    const nlp::SolverSummary s =
-        nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model, at); }, {x}, one).runs.front();
+    walker::GaitProblem problem_at(model, at);
+    const nlp::SolverSummary s = nlp::solve_with_restarts(problem_at, solver, x, kDesignRestarts);
     if (s.termination == nlp::Termination::user_stop) {
       r.finished = false;
       r.message = "stopped";
