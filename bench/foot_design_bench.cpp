@@ -79,6 +79,9 @@ int main(int argc, char** argv) {
     std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d)\n",
                 d.density, d.kkt_starts, o.starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
                 d.class_counts[3]);
+    for (std::size_t k = 0; k < d.runs.size(); ++k)
+      std::printf("  start %2zu: %-18s %5d iterations %6.1f s  f %.5f\n", k, nlp::to_string(d.runs[k].termination),
+                  d.runs[k].iterations, d.runs[k].seconds, d.runs[k].objective);
     for (std::size_t k = 0; k < d.optima.size(); ++k) {
       const studies::DesignOptimum& m = d.optima[k];
       std::printf("  optimum %zu: f %.5f, %s (%s)\n", k, m.objective, studies::to_string(m.classification.design_class),

@@ -94,3 +94,11 @@ TEST(FootDesign, DrawnStartFeetVaryTheFreeParametersWithinBoundsAndConvexity) {
   }
   EXPECT_EQ(draw_design_foot(start, all, bounds, 0.0, rng), start.parameters);
 }
+
+TEST(FootDesign, DefaultDesignHoldsTheCornerCurvaturesAsTheSeedDoes) {
+  // Tables 10.1 and 10.2: every design of the seed has k_H = k_T = 1e-8, the fits' fixed value
+  // (4.13, 4.18); the other parameters are designed.
+  EXPECT_EQ(default_design_parameters(foot::FootModel::hmt),
+            (std::vector<std::string>{"h_F", "l_HA", "l_HM", "l_MT", "gamma_F", "k_HM", "k_MT"}));
+  EXPECT_EQ(default_design_parameters(foot::FootModel::hm), (std::vector<std::string>{"h_F", "l_HA", "l_HM", "k_HM"}));
+}

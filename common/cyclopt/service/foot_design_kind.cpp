@@ -77,7 +77,7 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
         throw SpecError("free_parameters[" + std::to_string(i) + "]",
                         fp[i].dump() + " is not a parameter of the " + model + " foot; admissible: " + join(names));
   } else {
-    walker["free_parameters"] = names;
+    walker["free_parameters"] = studies::default_design_parameters(j.start_foot.model);
   }
   if (!walker.contains("design_bounds")) walker["design_bounds"] = nlohmann::json::object();  // the seed's (10.1)
   j.walker = parse_walker_job(walker, common_fields, true);

@@ -260,6 +260,7 @@ DensityDesign DesignStudy::at(double rho) {
       [&] { return std::make_unique<walker::GaitProblem>(model, po); },
       [&](std::mt19937_64& rng) { return design_start(start, po, centre, rng); }, mo);
   d.kkt_starts = r.successes;
+  for (const nlp::SolverSummary& run : r.runs) d.runs.push_back({run.termination, run.iterations, run.wall_seconds, run.objective});
   for (const nlp::MultistartOptimum& m : r.optima) {
     d.optima.push_back(optimum(shape, rho, m, r.runs));
     const DesignClass c = d.optima.back().classification.design_class;
@@ -398,6 +399,15 @@ foot::FootParameters<double> draw_design_foot(const foot::FootSpec& start, const
   return start.parameters;
 }
 
+std::vector<std::string> default_design_parameters(foot::FootModel model) {
+  const std::vector<std::string> corners =
+      model == foot::FootModel::hm ? std::vector<std::string>{"k_H", "k_M"} : std::vector<std::string>{"k_H", "k_T"};
+  std::vector<std::string> free;
+  for (const foot::ParameterInfo& info : foot::parameter_layout(model))
+    if (std::find(corners.begin(), corners.end(), info.name) == corners.end()) free.emplace_back(info.name);
+  return free;
+}
+
 std::vector<std::string> design_free_parameters(const foot::FootSpec& start, const FootDesignOptions& o) {
   if (start.model == foot::FootModel::point) throw std::invalid_argument("foot: the start foot must be HM or HMT");
   if (o.densities.empty()) throw std::invalid_argument("densities: need at least one density");
@@ -408,8 +418,7 @@ std::vector<std::string> design_free_parameters(const foot::FootSpec& start, con
   if (std::none_of(o.sweep.speeds.begin(), o.sweep.speeds.end(), [&](double v) { return std::abs(v - o.design_speed) <= 1e-12; }))
     throw std::invalid_argument("design_speed: must be one of the speeds");
   std::vector<std::string> free = o.free_parameters;
-  if (free.empty())
-    for (const foot::ParameterInfo& info : foot::parameter_layout(start.model)) free.emplace_back(info.name);
+  if (free.empty()) free = default_design_parameters(start.model);
   for (const std::string& name : free) {
     const auto layout = foot::parameter_layout(start.model);
     if (std::none_of(layout.begin(), layout.end(), [&](const foot::ParameterInfo& i) { return name == i.name; }))

@@ -54,7 +54,8 @@ struct FootDesignOptions {
   // rho 10, 8 starts: 0 found 0.02782 at best at 2.3 m/s, 1 the seed's design (Table 10.1, 0.02405).
   double foot_scale = 1.0;
   foot::DesignBounds bounds;            // (10.1)
-  std::vector<std::string> free_parameters;  // foot parameters optimised; empty: all of the model's
+  // Foot parameters optimised; empty: default_design_parameters (below).
+  std::vector<std::string> free_parameters;
   double objective_tolerance = 1e-5;    // distinct design optima (multistart.hpp)
   double x_tolerance = 1e-2;
   bool references = true;               // sweep the start foot and point feet (else savings are NaN)
@@ -90,6 +91,15 @@ struct DesignOptimum {
   nlp::SolverSummary summary;        // of the first of them
 };
 
+// How one design multistart run ended (its solves with restarts added up), for reports of where
+// the multistart's time goes.
+struct DesignRun {
+  nlp::Termination termination = nlp::Termination::numerical_failure;
+  int iterations = 0;
+  double seconds = 0.0;
+  double objective = 0.0;
+};
+
 struct DensityDesign {
   double density = 0.0;
   // The design problem: the start foot with the density, moved into (10.1), and the problem with
@@ -97,6 +107,7 @@ struct DensityDesign {
   walker::WalkerModel<double> model;
   walker::GaitProblemOptions problem;
   int kkt_starts = 0;                     // design multistart runs that reached a KKT point
+  std::vector<DesignRun> runs;            // every design multistart run, in start order
   std::vector<DesignOptimum> optima;      // best first
   int best = -1;                          // index of the best admissible optimum, -1 if none
   int class_counts[4] = {0, 0, 0, 0};     // optima per DesignClass
@@ -143,6 +154,11 @@ FootSweepSummary sweep_reference(DesignReference which, const foot::FootSpec& st
 // Steps 1-3 for one density (of options.densities or not); the savings are left NaN.
 DensityDesign design_density(double rho, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
                              const FootDesignOptions& options);
+// The foot parameters a design frees by default: all of the model's but the corner curvatures
+// (HM: k_H, k_M; HMT: k_H, k_T), which stay at the start foot's values, as the seed holds them at
+// 1e-8 in its fits (4.13, 4.18) and in all its designs (Tables 10.1, 10.2). Freed, f depends on
+// such a k about like log k (free_foot_parameters in foot_design.cpp), so KKT tests rarely settle.
+std::vector<std::string> default_design_parameters(foot::FootModel model);
 // The foot of one design start (FootDesignOptions::foot_scale): every free parameter of `start`
 // times exp(scale N(0,1)), kept in its range (parameter_layout) and moved into (10.1); redrawn
 // until it satisfies (3.21/3.24) and the HMT toe margin; `start`'s parameters after 100 draws.
