@@ -11,6 +11,7 @@
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -407,11 +408,12 @@ foot::FootParameters<double> draw_design_foot(const foot::FootSpec& start, const
 }
 
 std::vector<std::string> default_design_parameters(foot::FootModel model) {
-  const std::vector<std::string> corners =
-      model == foot::FootModel::hm ? std::vector<std::string>{"k_H", "k_M"} : std::vector<std::string>{"k_H", "k_T"};
+  const std::array<int, 2> corners = model == foot::FootModel::hm ? std::array<int, 2>{foot::hm::k_H, foot::hm::k_M}
+                                                                  : std::array<int, 2>{foot::hmt::k_H, foot::hmt::k_T};
+  const auto layout = foot::parameter_layout(model);
   std::vector<std::string> free;
-  for (const foot::ParameterInfo& info : foot::parameter_layout(model))
-    if (std::find(corners.begin(), corners.end(), info.name) == corners.end()) free.emplace_back(info.name);
+  for (std::size_t i = 0; i < layout.size(); ++i)
+    if (std::find(corners.begin(), corners.end(), static_cast<int>(i)) == corners.end()) free.emplace_back(layout[i].name);
   return free;
 }
 
