@@ -32,7 +32,7 @@ std::string svg_via_file(const Drawing& d, const RenderOptions& options) {
 
 constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,Helvetica,Arial,sans-serif;margin:2em auto;max-width:980px;color:#1a1a1a}
 h1{font-size:1.6em;margin-bottom:0}.sub{color:#666;margin-top:.2em}h2{font-size:1.25em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}
-table{border-collapse:collapse;margin:.8em 0;font-size:.9em}th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}
+.wide{overflow-x:auto}table{border-collapse:collapse;margin:.8em 0;font-size:.9em}th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}
 th{background:#f2f2f2}td:first-child,th:first-child{text-align:left}pre{background:#f7f7f7;padding:.8em;overflow-x:auto;font-size:.85em}
 figure{margin:1em 0}figcaption{color:#444;font-size:.9em}svg{max-width:100%;height:auto})";
 
@@ -79,7 +79,7 @@ std::string to_html(const Report& report) {
     if (!s.text.empty()) h << "<p>" << html_escape(s.text) << "</p>\n";
     if (!s.code.empty()) h << "<pre>" << html_escape(s.code) << "</pre>\n";
     for (const ReportTable& t : s.tables) {
-      h << "<table><thead><tr>";
+      h << "<div class=\"wide\"><table><thead><tr>";
       for (const std::string& c : t.header) h << "<th>" << html_escape(c) << "</th>";
       h << "</tr></thead><tbody>\n";
       for (const auto& row : t.rows) {
@@ -87,7 +87,7 @@ std::string to_html(const Report& report) {
         for (const std::string& c : row) h << "<td>" << html_escape(c) << "</td>";
         h << "</tr>\n";
       }
-      h << "</tbody></table>\n";
+      h << "</tbody></table></div>\n";
     }
     for (const ReportFigure& f : s.figures)
       h << "<figure>" << svg_with_id_prefix(f.svg, "fig" + std::to_string(++figure_count) + "-") << "<figcaption>"
