@@ -3,7 +3,8 @@
 // design speed, the free-foot continuation over the grid and the fixed-foot sweeps of the feet
 // optimal at the highest and lowest speed, against the start foot (its own masses) and point feet.
 // Prints per density the design, its active bounds (10.1), the classes of the optima, the time
-// per phase, and ends each block with
+// per phase, and ends each block with the figures of the density's answer (the better of its two
+// fixed-foot designs, studies::better_design)
 //   rho R: saving vs start S %, vs point feet Q %, speeds N/21, wall T s
 //
 // usage: foot_design_bench [densities = 10] [starts = 20] [speeds = 0.3:0.1:2.3] [sweep_starts = 4]
@@ -51,6 +52,13 @@ void print_sweep(const studies::FootSweepSummary& s) {
   std::printf("\n");
 }
 
+// The foot's parameters on the current line: "name value" per parameter of its layout.
+void print_parameters(const foot::FootSpec& f) {
+  const auto layout = foot::parameter_layout(f.model);
+  for (std::size_t k = 0; k < layout.size(); ++k)
+    std::printf(" %s %.4g", std::string(layout[k].name).c_str(), f.parameters[static_cast<Eigen::Index>(k)]);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -90,14 +98,15 @@ int main(int argc, char** argv) {
     if (d.best >= 0) {
       const studies::DesignOptimum& b = d.optima[static_cast<std::size_t>(d.best)];
       std::printf("  design (optimum %d):", d.best);
-      const auto layout = foot::parameter_layout(b.foot.model);
-      for (std::size_t k = 0; k < layout.size(); ++k) std::printf(" %s %.4g", std::string(layout[k].name).c_str(), b.foot.parameters[static_cast<Eigen::Index>(k)]);
+      print_parameters(b.foot);
       std::printf("\n  m_F %.3f kg, r_F %.1f mm, J_F %.2e kg m^2, theta_F0 %.3f rad; active bounds (10.1):", b.mass,
                   1e3 * b.com_distance, b.inertia, b.zero_angle);
       for (const std::string& a : b.active_bounds) std::printf(" [%s]", a.c_str());
       std::printf("\n  free-foot continuation: %zu points, %s; f_mech per speed:", d.free_foot.points.size(), d.free_foot.message.c_str());
       for (double f : d.free_foot_f_mech) std::printf(" %.4f", f);
-      std::printf("\n  low-speed design at %.2f m/s\n", d.low_speed);
+      std::printf("\n  low-speed design at %.2f m/s:", d.low_speed);
+      print_parameters(d.low_speed_foot);
+      std::printf("\n");
       print_sweep(d.high);
       print_sweep(d.low);
       std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
@@ -105,8 +114,10 @@ int main(int argc, char** argv) {
     }
     std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s\n",
                 d.multistart_seconds, d.continuation_seconds, d.sweep_seconds);
+    std::printf("  answer: the %s (studies::better_design)\n", studies::to_string(d.answer));
     std::printf("rho %.4g: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/%zu, wall %.1f s\n", d.density,
-                100 * d.saving_vs_start, 100 * d.saving_vs_point, d.high.speeds_found, n, d.seconds);
+                100 * d.answer_saving_vs_start(), 100 * d.answer_saving_vs_point(), d.answer_sweep().speeds_found, n,
+                d.seconds);
   }
   std::printf("total %.1f s (references %.1f s)\n", r.seconds, r.reference_seconds);
 }

@@ -40,7 +40,8 @@ std::optional<nlohmann::ordered_json> fit_summary(const nlohmann::json& row, con
 
 // A foot_design density (service/foot_design_kind.hpp): the classes of the multistart's optima
 // (admissible/stilt/wheel/no rolling), the design's parameters and mass, the bounds (10.1) it
-// touches, its fixed-foot sweep's mean f_mech and savings, and the speeds that sweep reached.
+// touches, its fixed-foot sweep's mean f_mech and savings, and the speeds that sweep reached; the
+// same for the low-speed design's sweep, and which of the two is the density's answer.
 std::optional<nlohmann::ordered_json> design_summary(const nlohmann::json& row, const nlohmann::json& values) {
   records::DesignedFootRecord d;
   try {
@@ -61,6 +62,11 @@ std::optional<nlohmann::ordered_json> design_summary(const nlohmann::json& row, 
   s["saving_vs_start_%"] = number(100 * d.saving_vs_start);
   s["saving_vs_point_%"] = number(100 * d.saving_vs_point);
   s["speeds"] = std::to_string(d.speeds_reached) + "/" + std::to_string(d.speeds);
+  s["low_mean_f_mech"] = number(d.low_mean_f_mech);
+  s["low_saving_vs_start_%"] = number(100 * d.low_saving_vs_start);
+  s["low_saving_vs_point_%"] = number(100 * d.low_saving_vs_point);
+  s["low_speeds"] = std::to_string(d.low_speeds_reached) + "/" + std::to_string(d.speeds);
+  s["answer"] = d.answer;
   s["status"] = member(row, "status");
   return s;
 }

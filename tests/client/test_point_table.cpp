@@ -1,6 +1,7 @@
 // `cyclopt query` of a foot_design job (point_table.hpp): a density's row prints as one line with
 // its optima per class, design parameters, m_F, active bounds (10.1), mean f_mech, savings and
-// the speeds its sweep reached, read through records::DesignedFootRecord.
+// the speeds its sweep reached, the same for the low-speed design and which is the answer, read
+// through records::DesignedFootRecord.
 #include "point_table.hpp"
 #include "row_table.hpp"
 
@@ -30,12 +31,19 @@ TEST(PointTable, AFootDesignDensityIsOneLine) {
   d.mean_f_mech = 0.02975;
   d.saving_vs_start = 0.203;
   d.saving_vs_point = 0.67;
+  d.low_speeds_reached = 21;
+  d.low_mean_f_mech = 0.025;
+  d.low_saving_vs_start = 0.412;
+  d.low_saving_vs_point = 0.8;
+  d.answer = "low-speed design";
   const nlohmann::json row = {{"curve", 0}, {"point", 0}, {"parameter", 10.0}, {"status", "ok"}, {"values", d}};
   const auto s = point_summary(row);
   ASSERT_TRUE(s);
   EXPECT_EQ((*s)["optima_a/s/w/n"], "2/1/0/0");
   EXPECT_EQ((*s)["active_bounds"], "l_HM_max, h_F_max");
   EXPECT_EQ((*s)["speeds"], "20/21");
+  EXPECT_EQ((*s)["low_speeds"], "21/21");
+  EXPECT_EQ((*s)["answer"], "low-speed design");
   EXPECT_DOUBLE_EQ((*s)["l_HM"].get<double>(), 0.4);
   std::ostringstream out;
   print_rows(out, nlohmann::json::array({row}), RowFormat::table);
@@ -43,6 +51,7 @@ TEST(PointTable, AFootDesignDensityIsOneLine) {
   std::printf("%s", text.c_str());
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2);  // header and the density
   EXPECT_NE(text.find("20.3"), std::string::npos) << text;  // saving vs the start foot, %
+  EXPECT_NE(text.find("41.2"), std::string::npos) << text;  // the low-speed design's
 }
 
 }  // namespace

@@ -263,6 +263,7 @@ TEST(ResultRecords, FootDesignRecordsRoundTrip) {
   d.low_mean_f_mech = 0.03;
   d.low_saving_vs_start = 0.19;
   d.low_saving_vs_point = 0.66;
+  d.answer = "low-speed design";
   d.multistart_seconds = 80;
   d.continuation_seconds = 90;
   d.sweep_seconds = 280;
@@ -277,6 +278,12 @@ TEST(ResultRecords, FootDesignRecordsRoundTrip) {
   EXPECT_EQ(back.reason, none.reason);
   EXPECT_TRUE(std::isnan(back.mean_f_mech) && std::isnan(back.design.m_F) && back.design.parameters.empty());
   EXPECT_EQ(error_of<DesignedFootRecord>({{"density", 10}}), "values.admissible: is missing");
+  nlohmann::json older = d;  // stored before the answer existed: the design was the only one
+  older.erase("answer");
+  EXPECT_EQ(older.get<DesignedFootRecord>().answer, "design");
+  nlohmann::json unknown = d;
+  unknown["answer"] = "wheel";
+  EXPECT_EQ(error_of<DesignedFootRecord>(unknown), "values.answer: must be \"design\" or \"low-speed design\", got \"wheel\"");
 }
 
 TEST(ResultRecords, NanIsStoredAsNullAndReadBackAsNan) {

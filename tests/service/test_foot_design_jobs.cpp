@@ -194,9 +194,10 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   EXPECT_EQ(free_foot.front()["values"].get<records::DesignPointRecord>().foot.parameters, design.design.parameters);
   EXPECT_GE(design.free_foot_speeds, 1);
   // Mean f_mech and savings from the stored sweeps.
-  double high = 0, start = 0, point = 0;
+  double high = 0, low = 0, start = 0, point = 0;
   for (int i = 0; i < 2; ++i) {
     high += curves[records::high_design_curve(0)][i]["values"]["f_mech"].get<double>() / 2;
+    low += curves[records::low_design_curve(0)][i]["values"]["f_mech"].get<double>() / 2;
     start += curves[records::kStartFootCurve][i]["values"]["f_mech"].get<double>() / 2;
     point += curves[records::kPointFeetCurve][i]["values"]["f_mech"].get<double>() / 2;
   }
@@ -204,6 +205,10 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   EXPECT_NEAR(design.mean_f_mech, high, 1e-12);
   EXPECT_NEAR(design.saving_vs_start, 1 - high / start, 1e-12);
   EXPECT_NEAR(design.saving_vs_point, 1 - high / point, 1e-12);
+  EXPECT_EQ(design.low_speeds_reached, 2);
+  EXPECT_NEAR(design.low_mean_f_mech, low, 1e-12);
+  EXPECT_NEAR(design.low_saving_vs_point, 1 - low / point, 1e-12);
+  EXPECT_EQ(design.answer, low < high ? "low-speed design" : "design");  // both reached both speeds
   std::printf("rho 10: design f %.5f at 2.3 m/s, mean f_mech %.5f (start foot %.5f, point feet %.5f), savings %.1f %% / %.1f %%\n",
               design.design_objective, high, start, point, 100 * design.saving_vs_start, 100 * design.saving_vs_point);
 
@@ -222,12 +227,18 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   EXPECT_EQ(figures[1].name, "foot_design_cost");
   EXPECT_EQ(figures[2].name, "foot_design_gait");
   const auto& chart = std::get<plot::LineChart>(figures[1].drawing);
-  ASSERT_EQ(chart.series.size(), 3u);  // start foot, point feet, the rho 10 design
-  EXPECT_EQ(chart.series[2].y, (std::vector<double>{curves[records::high_design_curve(0)][0]["values"]["f_mech"].get<double>(),
-                                                    curves[records::high_design_curve(0)][1]["values"]["f_mech"].get<double>()}));
+  ASSERT_EQ(chart.series.size(), 4u);  // start foot, point feet, the rho 10 design and low-speed design
+  for (int k : {0, 1}) {
+    const int curve = k == 0 ? records::high_design_curve(0) : records::low_design_curve(0);
+    EXPECT_EQ(chart.series[2 + k].y, (std::vector<double>{curves[curve][0]["values"]["f_mech"].get<double>(),
+                                                          curves[curve][1]["values"]["f_mech"].get<double>()}));
+    EXPECT_EQ(chart.series[2 + k].dashed, k == 1);
+  }
   const std::string html = plot::to_html(plot::foot_design_report(doc));
   EXPECT_NE(html.find("Designs per density"), std::string::npos);
   EXPECT_NE(html.find("best design"), std::string::npos);
+  EXPECT_NE(html.find("Best: the " + design.answer + " of rho 10"), std::string::npos);
+  EXPECT_NE(html.find("low-speed design ("), std::string::npos);  // its row in the table of designs
   // CYCLOPT_TEST_FIGURE_DIR keeps the pictures and the report, to look at them.
   const std::string keep = std::getenv("CYCLOPT_TEST_FIGURE_DIR") ? std::getenv("CYCLOPT_TEST_FIGURE_DIR") : "";
   const std::string out = keep.empty() ? (dir_ / "figures").string() : keep;

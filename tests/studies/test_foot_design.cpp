@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 using namespace cyclopt;
@@ -101,4 +102,35 @@ TEST(FootDesign, DefaultDesignHoldsTheCornerCurvaturesAsTheSeedDoes) {
   EXPECT_EQ(default_design_parameters(foot::FootModel::hmt),
             (std::vector<std::string>{"h_F", "l_HA", "l_HM", "l_MT", "gamma_F", "k_HM", "k_MT"}));
   EXPECT_EQ(default_design_parameters(foot::FootModel::hm), (std::vector<std::string>{"h_F", "l_HA", "l_HM", "k_HM"}));
+}
+
+TEST(FootDesign, TheAnswerIsTheDesignThatReachesMoreSpeedsThenTheCheaperOne) {
+  const double nan = std::nan("");
+  const auto sweep = [](std::vector<double> f) {
+    FootSweepSummary s;
+    s.f_mech = std::move(f);
+    s.speeds_found = static_cast<int>(std::count_if(s.f_mech.begin(), s.f_mech.end(), [](double x) { return std::isfinite(x); }));
+    return s;
+  };
+  // Equal reach: the lower mean wins; a tie keeps the design (the seed's choice).
+  EXPECT_EQ(better_design(sweep({0.005, 0.010, 0.020}), sweep({0.001, 0.010, 0.021})), DesignAnswer::low_speed_design);
+  EXPECT_EQ(better_design(sweep({0.005, 0.010, 0.020}), sweep({0.007, 0.010, 0.020})), DesignAnswer::design);
+  EXPECT_EQ(better_design(sweep({0.005, 0.010, 0.020}), sweep({0.005, 0.010, 0.020})), DesignAnswer::design);
+  // More speeds win whatever the mean (run D's low-speed design: cheaper, but 0.4 m/s missing).
+  EXPECT_EQ(better_design(sweep({0.005, 0.010, 0.020}), sweep({0.001, nan, 0.010})), DesignAnswer::design);
+  EXPECT_EQ(better_design(sweep({0.001, nan, 0.010}), sweep({0.005, 0.010, 0.020})), DesignAnswer::low_speed_design);
+  // Equal reach on different speeds: compared over the speeds both reached.
+  EXPECT_EQ(better_design(sweep({nan, 0.010, 0.020}), sweep({0.001, nan, 0.021})), DesignAnswer::design);
+  // add_savings sets the answer, and the answer's savings are its sweep's.
+  DensityDesign d;
+  d.high = sweep({0.005, 0.010, 0.020});
+  d.low = sweep({0.001, 0.010, 0.020});
+  const std::vector<double> speeds{0.3, 0.4, 0.5};
+  add_savings(d, speeds, sweep({0.010, 0.020, 0.030}), sweep({0.020, 0.040, 0.060}));
+  EXPECT_EQ(d.answer, DesignAnswer::low_speed_design);
+  EXPECT_EQ(&d.answer_sweep(), &d.low);
+  EXPECT_NEAR(d.answer_saving_vs_start(), 1 - 0.031 / 0.060, 1e-12);
+  EXPECT_NEAR(d.answer_saving_vs_point(), 1 - 0.031 / 0.120, 1e-12);
+  EXPECT_NEAR(d.saving_vs_start, 1 - 0.035 / 0.060, 1e-12);
+  EXPECT_STREQ(to_string(d.answer), "low-speed design");
 }

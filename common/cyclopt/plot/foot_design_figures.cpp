@@ -20,19 +20,21 @@ std::string rho_text(double rho) {
   return b;
 }
 
-// The start foot's model with the designed parameters at the density; mass properties follow (E.3-E.7).
-foot::FootSpec designed_spec(const foot::FootSpec& start, const records::DesignedFootRecord& r) {
+// The start foot's model with the parameters of `designed` (the record's member `field`) at the
+// density; mass properties follow (E.3-E.7).
+foot::FootSpec designed_spec(const foot::FootSpec& start, const records::DesignedFoot& designed, double density,
+                             const std::string& field, const std::string& name) {
   foot::FootSpec f = start;
   const auto layout = foot::parameter_layout(start.model);
   for (std::size_t i = 0; i < layout.size(); ++i) {
-    const auto it = r.design.parameters.find(std::string(layout[i].name));
-    if (it == r.design.parameters.end())
-      throw records::RecordError("values.design.parameters." + std::string(layout[i].name) + ": is missing");
+    const auto it = designed.parameters.find(std::string(layout[i].name));
+    if (it == designed.parameters.end())
+      throw records::RecordError("values." + field + ".parameters." + std::string(layout[i].name) + ": is missing");
     f.parameters[static_cast<Eigen::Index>(i)] = it->second;
   }
-  f.density = r.density;
+  f.density = density;
   f.theta_F0.reset();
-  f.name = rho_text(r.density) + " design";
+  f.name = name;
   return f;
 }
 
@@ -57,15 +59,21 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
     if (s.value("curve", -1) == records::kDesignCurve) {
       DesignedDensity d;
       d.record = s.at("values").get<records::DesignedFootRecord>();
-      if (d.record.admissible) d.design = designed_spec(c.start, d.record);
       d.sweep.name = rho_text(d.record.density) + " design";
+      d.low_sweep.name = rho_text(d.record.density) + " low-speed design";
+      if (d.record.admissible) {
+        d.design = designed_spec(c.start, d.record.design, d.record.density, "design", d.sweep.name);
+        d.low_design = designed_spec(c.start, d.record.low_speed_design, d.record.density, "low_speed_design", d.low_sweep.name);
+      }
       c.densities.push_back(std::move(d));
     }
   if (c.densities.empty())
     throw std::invalid_argument("job " + std::to_string(c.id) + " has no density stored yet (is it running?)");
   std::map<int, SweptCurve*> curves{{records::kStartFootCurve, &c.start_foot}, {records::kPointFeetCurve, &c.point_feet}};
-  for (std::size_t k = 0; k < c.densities.size(); ++k)
+  for (std::size_t k = 0; k < c.densities.size(); ++k) {
     curves[records::high_design_curve(static_cast<int>(k))] = &c.densities[k].sweep;
+    curves[records::low_design_curve(static_cast<int>(k))] = &c.densities[k].low_sweep;
+  }
   for (const nlohmann::json& s : solutions) {
     const auto it = curves.find(s.value("curve", -1));
     if (it == curves.end() || !s.at("parameter").is_number()) continue;
@@ -75,11 +83,15 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
     it->second->f_mech.push_back(f_mech);
   }
   for (std::size_t k = 0; k < c.densities.size(); ++k) {
-    const records::DesignedFootRecord& r = c.densities[k].record;
-    if (r.admissible && (c.best < 0 || r.saving_vs_start > c.densities[static_cast<std::size_t>(c.best)].record.saving_vs_start))
+    const DesignedDensity& d = c.densities[k];
+    if (d.record.admissible &&
+        (c.best < 0 || d.answer_saving_vs_start() > c.densities[static_cast<std::size_t>(c.best)].answer_saving_vs_start()))
       c.best = static_cast<int>(k);
   }
-  if (c.best >= 0) c.best_gaits = gait_points(doc, records::high_design_curve(c.best));
+  if (c.best >= 0)
+    c.best_gaits = gait_points(doc, c.densities[static_cast<std::size_t>(c.best)].low_is_answer()
+                                        ? records::low_design_curve(c.best)
+                                        : records::high_design_curve(c.best));
   return c;
 }
 
@@ -94,10 +106,15 @@ LineChart foot_design_cost_chart(const FootDesignCurves& c) {
     chart.series.push_back({c.point_feet.name, c.point_feet.speed, c.point_feet.f_mech, false, true, Color{0.5, 0.5, 0.5, 1}});
   int colour = 0;
   for (const DesignedDensity& d : c.densities) {
-    if (d.sweep.speed.empty()) continue;
-    chart.series.push_back({d.sweep.name + " (saving " + report_number(100 * d.record.saving_vs_start, "%.0f %%") +
-                                " vs start, " + report_number(100 * d.record.saving_vs_point, "%.0f %%") + " vs point feet)",
-                            d.sweep.speed, d.sweep.f_mech, true, false, palette(colour++)});
+    const Color color = palette(colour++);
+    const auto add = [&](const SweptCurve& sweep, double vs_start, double vs_point, bool dashed) {
+      if (sweep.speed.empty()) return;
+      chart.series.push_back({sweep.name + " (saving " + report_number(100 * vs_start, "%.0f %%") + " vs start, " +
+                                  report_number(100 * vs_point, "%.0f %%") + " vs point feet)",
+                              sweep.speed, sweep.f_mech, true, dashed, color});
+    };
+    add(d.sweep, d.record.saving_vs_start, d.record.saving_vs_point, false);
+    add(d.low_sweep, d.record.low_saving_vs_start, d.record.low_saving_vs_point, true);
   }
   if (chart.series.empty()) throw std::invalid_argument("foot design: no sweep has a point to draw");
   start_at_zero(chart);
@@ -112,12 +129,17 @@ Scene foot_design_outlines_scene(const FootDesignCurves& c) {
                           "start foot " + c.start.name});
   int colour = 0;
   for (const DesignedDensity& d : c.densities) {
+    const Color color = palette(colour++);
     if (!d.record.admissible) continue;
-    char legend[160];
-    std::snprintf(legend, sizeof legend, "%s: m_F %.3f kg%s", d.sweep.name.c_str(), d.record.design.m_F,
-                  &d - c.densities.data() == c.best ? " (best)" : "");
-    scene.shapes.push_back({foot_outline(d.design), palette(colour++), &d - c.densities.data() == c.best ? 2.8 : 1.6, false,
-                            true, std::nullopt, legend});
+    const bool best_density = &d - c.densities.data() == c.best;
+    const auto add = [&](const foot::FootSpec& f, double m_F, bool low) {
+      const bool best = best_density && low == d.low_is_answer();
+      char legend[160];
+      std::snprintf(legend, sizeof legend, "%s: m_F %.3f kg%s", f.name.c_str(), m_F, best ? " (best)" : "");
+      scene.shapes.push_back({foot_outline(f), color, best ? 2.8 : 1.6, low, true, std::nullopt, legend});
+    };
+    add(d.design, d.record.design.m_F, false);
+    add(d.low_design, d.record.low_speed_design.m_F, true);
   }
   scene.markers.push_back({0.0, 0.0, {0.1, 0.1, 0.1, 1}, 3, "ankle"});
   scene.legend_room = 300;
@@ -141,8 +163,8 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
   out.push_back({"foot_design_outlines", "Designed feet per density over the start foot (seed 001 Fig. 10.5/10.6)",
                  std::move(outlines), size});
   try {
-    out.push_back({"foot_design_cost", "f_mech over speed of each density's design, the start foot and point feet "
-                                       "(seed 001 Fig. 10.7)",
+    out.push_back({"foot_design_cost", "f_mech over speed of each density's design (solid) and low-speed design "
+                                       "(dashed), the start foot and point feet (seed 001 Fig. 10.7)",
                    foot_design_cost_chart(c), {}});
   } catch (const std::invalid_argument& e) {
     skip(std::string("foot-design-cost: ") + e.what());
@@ -151,25 +173,25 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
     skip("foot-design-gait: no density has an admissible design");
     return out;
   }
-  // The best design's gait at the design speed, from its fixed-foot sweep (Fig. 10.4).
+  // The best answer's gait at the design speed, from its fixed-foot sweep (Fig. 10.4).
   const DesignedDensity& best = c.densities[static_cast<std::size_t>(c.best)];
   WalkerJobResults r;
   r.id = c.id;
-  r.label = best.sweep.name;
+  r.label = best.answer_sweep().name;
   r.spec = c.spec;
   r.job = c.setup.walker;
-  r.job.foot = best.design;
+  r.job.foot = best.answer();
   r.points = c.best_gaits;
   const GaitPoint* p = point_near(r, c.setup.design_speed);
   if (!p) {
-    skip("foot-design-gait: the " + best.sweep.name + "'s sweep has no converged gait with a trajectory");
+    skip("foot-design-gait: the " + r.label + "'s sweep has no converged gait with a trajectory");
     return out;
   }
   Scene strobe = gait_stroboscope(r, *p);
   const RenderOptions strobe_size = fitted_options(strobe, 1000);
   char caption[160];
-  std::snprintf(caption, sizeof caption, "Gait of the best design (%s) at %.2f m/s (seed 001 Fig. 10.4)",
-                best.sweep.name.c_str(), p->speed);
+  std::snprintf(caption, sizeof caption, "Gait of the best design (%s) at %.2f m/s (seed 001 Fig. 10.4)", r.label.c_str(),
+                p->speed);
   out.push_back({"foot_design_gait", caption, std::move(strobe), strobe_size});
   return out;
 }

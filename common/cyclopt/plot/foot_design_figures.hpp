@@ -1,11 +1,12 @@
 #pragma once
 // Figures of a foot_design job (service/foot_design_kind.hpp; seed 001 section 10.2), read from
 // the job document `cyclopt export` writes through records/foot_design_records.hpp:
-//   foot-design-outlines  the design of every density with an admissible one, over the start foot,
-//                         ankles at one point (Fig. 10.5/10.6)
-//   foot-design-cost      f_mech over speed of each density's design (its fixed-foot sweep), with
-//                         the start foot and point feet (Fig. 10.7)
-//   foot-design-gait      the stroboscope of the best design's gait at the design speed (Fig. 10.4)
+//   foot-design-outlines  the design of every density with an admissible one (solid) and its
+//                         low-speed design (dashed), over the start foot, ankles at one point
+//                         (Fig. 10.5/10.6)
+//   foot-design-cost      f_mech over speed of both (their fixed-foot sweeps), with the start foot
+//                         and point feet (Fig. 10.7)
+//   foot-design-gait      the stroboscope of the best answer's gait at the design speed (Fig. 10.4)
 // Densities without an admissible design, and sweeps without a point, are left out and named.
 
 #include "cyclopt/foot/foot_spec.hpp"
@@ -28,8 +29,15 @@ struct SweptCurve {
 
 struct DesignedDensity {
   records::DesignedFootRecord record;
-  foot::FootSpec design;  // when record.admissible: the start foot's model with the design's parameters and density
-  SweptCurve sweep;       // the design's fixed-foot sweep
+  // When record.admissible: the start foot's model with the parameters and density of the design
+  // (optimal at the design speed) and of the low-speed design (optimal at record.low_speed).
+  foot::FootSpec design, low_design;
+  SweptCurve sweep, low_sweep;  // their fixed-foot sweeps
+  bool low_is_answer() const { return record.answer == "low-speed design"; }
+  const foot::FootSpec& answer() const { return low_is_answer() ? low_design : design; }
+  const SweptCurve& answer_sweep() const { return low_is_answer() ? low_sweep : sweep; }
+  double answer_saving_vs_start() const { return low_is_answer() ? record.low_saving_vs_start : record.saving_vs_start; }
+  double answer_saving_vs_point() const { return low_is_answer() ? record.low_saving_vs_point : record.saving_vs_point; }
 };
 
 struct FootDesignCurves {
@@ -37,8 +45,8 @@ struct FootDesignCurves {
   foot::FootSpec start;   // the start foot (its own masses)
   SweptCurve start_foot, point_feet;
   std::vector<DesignedDensity> densities;  // in the order of the spec's densities
-  int best = -1;          // index into densities: the admissible design with the largest saving vs the start foot
-  std::vector<GaitPoint> best_gaits;  // the best design's fixed-foot sweep (when best >= 0)
+  int best = -1;          // index into densities: the admissible one whose answer saves most vs the start foot
+  std::vector<GaitPoint> best_gaits;  // the fixed-foot sweep of the best density's answer (when best >= 0)
   nlohmann::json spec;    // as stored (the resolved spec where the job has one)
   service::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
 };

@@ -19,43 +19,59 @@ std::string joined(const std::vector<std::string>& items) {
 ReportTable outcome_table(const FootDesignCurves& c) {
   ReportTable t;
   t.header = {"rho (kg/m^2)", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling",
-              "f at design speed", "speeds reached", "mean f_mech", "saving vs start foot", "saving vs point feet",
-              "wall (s)"};
+              "f at design speed", "answer", "speeds reached", "mean f_mech", "saving vs start foot",
+              "saving vs point feet", "wall (s)"};
   for (const DesignedDensity& d : c.densities) {
     const records::DesignedFootRecord& r = d.record;
+    const bool low = d.low_is_answer();
     t.rows.push_back({report_number(r.density, "%g"),
                       r.admissible ? (&d - c.densities.data() == c.best ? "best design" : "design")
                                    : "no admissible design: " + r.reason.value_or("-"),
                       std::to_string(r.kkt_starts) + " / " + std::to_string(r.starts),
                       std::to_string(r.admissible_optima) + " / " + std::to_string(r.stilt_optima) + " / " +
                           std::to_string(r.wheel_optima) + " / " + std::to_string(r.no_rolling_optima),
-                      report_number(r.design_objective, "%.5f"),
-                      std::to_string(r.speeds_reached) + " / " + std::to_string(r.speeds), report_number(r.mean_f_mech, "%.5f"),
-                      report_number(100 * r.saving_vs_start, "%.1f %%"), report_number(100 * r.saving_vs_point, "%.1f %%"),
-                      report_number(r.seconds, "%.0f")});
+                      report_number(r.design_objective, "%.5f"), r.admissible ? r.answer : "-",
+                      std::to_string(low ? r.low_speeds_reached : r.speeds_reached) + " / " + std::to_string(r.speeds),
+                      report_number(low ? r.low_mean_f_mech : r.mean_f_mech, "%.5f"),
+                      report_number(100 * d.answer_saving_vs_start(), "%.1f %%"),
+                      report_number(100 * d.answer_saving_vs_point(), "%.1f %%"), report_number(r.seconds, "%.0f")});
   }
   return t;
 }
 
-// The designed feet: one column per parameter of the start foot's model, then what follows them.
+// Both fixed-foot designs of every density with an admissible one: the foot (one column per
+// parameter of the start foot's model), what follows it, and its sweep.
 ReportTable design_table(const FootDesignCurves& c) {
   ReportTable t;
-  t.header = {"rho (kg/m^2)"};
+  t.header = {"rho (kg/m^2)", "foot (optimal at)"};
   const auto layout = foot::parameter_layout(c.start.model);
   for (const foot::ParameterInfo& p : layout) t.header.push_back(std::string(p.name) + " (" + std::string(p.unit) + ")");
-  for (const char* h : {"m_F (kg)", "r_F (mm)", "J_F (kg m^2)", "theta_F0 (rad)", "active bounds (10.1)"}) t.header.push_back(h);
+  for (const char* h : {"m_F (kg)", "r_F (mm)", "J_F (kg m^2)", "theta_F0 (rad)", "active bounds (10.1)", "speeds reached",
+                        "mean f_mech", "saving vs start foot", "saving vs point feet"})
+    t.header.push_back(h);
   for (const DesignedDensity& d : c.densities) {
-    if (!d.record.admissible) continue;
-    const records::DesignedFoot& f = d.record.design;
-    std::vector<std::string> row{report_number(d.record.density, "%g")};
-    for (const foot::ParameterInfo& p : layout) {
-      const auto it = f.parameters.find(std::string(p.name));
-      row.push_back(it == f.parameters.end() ? "-" : report_number(it->second, "%.4g"));
+    const records::DesignedFootRecord& r = d.record;
+    if (!r.admissible) continue;
+    for (const bool low : {false, true}) {
+      const records::DesignedFoot& f = low ? r.low_speed_design : r.design;
+      std::vector<std::string> row{report_number(r.density, "%g"),
+                                   std::string(low ? "low-speed design (" : "design (") +
+                                       report_number(low ? r.low_speed : c.setup.design_speed, "%.2f") + " m/s)" +
+                                       (low == d.low_is_answer() ? ", answer" : "")};
+      for (const foot::ParameterInfo& p : layout) {
+        const auto it = f.parameters.find(std::string(p.name));
+        row.push_back(it == f.parameters.end() ? "-" : report_number(it->second, "%.4g"));
+      }
+      for (const std::string& v :
+           {report_number(f.m_F, "%.3f"), report_number(1e3 * f.r_F, "%.1f"), report_number(f.J_F, "%.2e"),
+            report_number(f.theta_F0, "%.3f"), low ? std::string("-") : joined(r.active_bounds),
+            std::to_string(low ? r.low_speeds_reached : r.speeds_reached) + " / " + std::to_string(r.speeds),
+            report_number(low ? r.low_mean_f_mech : r.mean_f_mech, "%.5f"),
+            report_number(100 * (low ? r.low_saving_vs_start : r.saving_vs_start), "%.1f %%"),
+            report_number(100 * (low ? r.low_saving_vs_point : r.saving_vs_point), "%.1f %%")})
+        row.push_back(v);
+      t.rows.push_back(std::move(row));
     }
-    for (const std::string& v : {report_number(f.m_F, "%.3f"), report_number(1e3 * f.r_F, "%.1f"), report_number(f.J_F, "%.2e"),
-                                 report_number(f.theta_F0, "%.3f"), joined(d.record.active_bounds)})
-      row.push_back(v);
-    t.rows.push_back(std::move(row));
   }
   return t;
 }
@@ -79,12 +95,17 @@ Report foot_design_report(const nlohmann::json& doc) {
   designs.heading = "Designs per density";
   designs.text = "Per density: the design multistart at the design speed (foot and gait free, mass properties following "
                  "the geometry, appendix E), its optima by class (design_class.hpp), the best admissible optimum as the "
-                 "design, and the fixed-foot sweep of that design: mean f_mech (eq. 5.102) over the speeds it reached and "
-                 "the savings against the start foot (its own masses) and point feet over the speeds both reach.";
+                 "design; the free-foot continuation to lower speeds, whose foot at the lowest speed it reached is the "
+                 "low-speed design; and the fixed-foot sweeps of both: mean f_mech (eq. 5.102) over the speeds each "
+                 "reached and the savings against the start foot (its own masses) and point feet over the speeds both "
+                 "reach. The answer is the better of the two: the one reaching more speeds, of equal reach the lower "
+                 "mean f_mech.";
   if (c.best >= 0) {
-    const records::DesignedFootRecord& b = c.densities[static_cast<std::size_t>(c.best)].record;
-    designs.text += " Best: rho " + report_number(b.density, "%g") + " kg/m^2, saving " + report_number(100 * b.saving_vs_start, "%.1f") +
-                    " % against the start foot and " + report_number(100 * b.saving_vs_point, "%.1f") + " % against point feet.";
+    const DesignedDensity& b = c.densities[static_cast<std::size_t>(c.best)];
+    designs.text += " Best: the " + b.record.answer + " of rho " + report_number(b.record.density, "%g") +
+                    " kg/m^2, saving " + report_number(100 * b.answer_saving_vs_start(), "%.1f") +
+                    " % against the start foot and " + report_number(100 * b.answer_saving_vs_point(), "%.1f") +
+                    " % against point feet.";
   } else {
     designs.text += " No density has an admissible design.";
   }

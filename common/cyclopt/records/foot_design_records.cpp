@@ -85,6 +85,7 @@ void to_json(nlohmann::json& j, const DesignedFootRecord& d) {
        {"low_mean_f_mech", finite_or_null(d.low_mean_f_mech)},
        {"low_saving_vs_start", finite_or_null(d.low_saving_vs_start)},
        {"low_saving_vs_point", finite_or_null(d.low_saving_vs_point)},
+       {"answer", d.answer},
        {"seconds", {{"multistart", finite_or_null(d.multistart_seconds)},
                     {"continuation", finite_or_null(d.continuation_seconds)},
                     {"sweeps", finite_or_null(d.sweep_seconds)},
@@ -122,6 +123,9 @@ void from_json(const nlohmann::json& j, DesignedFootRecord& d) {
   d.low_mean_f_mech = number(j, r, "low_mean_f_mech");
   d.low_saving_vs_start = number(j, r, "low_saving_vs_start");
   d.low_saving_vs_point = number(j, r, "low_saving_vs_point");
+  d.answer = optional_text(j, r, "answer").value_or("design");
+  if (d.answer != "design" && d.answer != "low-speed design")
+    throw RecordError(r + ".answer: must be \"design\" or \"low-speed design\", got \"" + d.answer + "\"");
   const nlohmann::json& seconds = member(j, r, "seconds");
   d.multistart_seconds = number(seconds, r + ".seconds", "multistart");
   d.continuation_seconds = number(seconds, r + ".seconds", "continuation");

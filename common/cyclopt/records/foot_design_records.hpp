@@ -68,6 +68,9 @@ struct DesignedFootRecord {
   // The same for the low-speed design.
   int low_speeds_reached = 0;
   double low_mean_f_mech = kUnset, low_saving_vs_start = kUnset, low_saving_vs_point = kUnset;
+  // The density's answer, the better of the two (studies::better_design): "design" or "low-speed
+  // design" (records stored before it existed read as "design").
+  std::string answer = "design";
   double multistart_seconds = kUnset, continuation_seconds = kUnset, sweep_seconds = kUnset, seconds = kUnset;
   // The KKT sensitivities of the design's optimum (foot parameters free, so their own derivatives
   // are those of the design bounds); absent when its solve did not converge.

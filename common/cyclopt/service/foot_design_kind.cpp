@@ -411,6 +411,7 @@ void run_design(const DesignJob& job, JobContext& ctx) {
       r.saving_vs_point = d.sweeps.saving_vs_point;
       r.low_saving_vs_start = d.sweeps.low_saving_vs_start;
       r.low_saving_vs_point = d.sweeps.low_saving_vs_point;
+      r.answer = studies::to_string(d.sweeps.answer);
     }
     storage::SolutionPoint p;
     p.key = {records::kDesignCurve, unit.index - kFirstDensityUnit};

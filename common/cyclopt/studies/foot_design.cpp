@@ -465,8 +465,23 @@ DensityDesign design_density(double rho, const foot::FootSpec& start, const walk
   return DesignStudy(start, problem, o, design_free_parameters(start, o)).at(rho);
 }
 
+const char* to_string(DesignAnswer a) { return a == DesignAnswer::design ? "design" : "low-speed design"; }
+
+DesignAnswer better_design(const FootSweepSummary& high, const FootSweepSummary& low) {
+  if (low.speeds_found != high.speeds_found)
+    return low.speeds_found > high.speeds_found ? DesignAnswer::low_speed_design : DesignAnswer::design;
+  double high_sum = 0.0, low_sum = 0.0;
+  for (std::size_t i = 0; i < high.f_mech.size() && i < low.f_mech.size(); ++i)
+    if (std::isfinite(high.f_mech[i]) && std::isfinite(low.f_mech[i])) {
+      high_sum += high.f_mech[i];
+      low_sum += low.f_mech[i];
+    }
+  return low_sum < high_sum ? DesignAnswer::low_speed_design : DesignAnswer::design;
+}
+
 void add_savings(DensityDesign& d, const std::vector<double>& speeds, const FootSweepSummary& start_foot,
                  const FootSweepSummary& point_feet) {
+  d.answer = better_design(d.high, d.low);
   d.saving_vs_start = saving(speeds, start_foot, d.high);
   d.saving_vs_point = saving(speeds, point_feet, d.high);
   d.low_saving_vs_start = saving(speeds, start_foot, d.low);
@@ -496,8 +511,9 @@ FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProb
     if (d.stopped) break;
     add_savings(d, o.sweep.speeds, result.start_foot, result.point_feet);
     const int k = static_cast<int>(result.designs.size()) - 1;
-    if (std::isfinite(d.saving_vs_start) &&
-        (result.best_design < 0 || d.saving_vs_start > result.designs[static_cast<std::size_t>(result.best_design)].saving_vs_start))
+    if (std::isfinite(d.answer_saving_vs_start()) &&
+        (result.best_design < 0 ||
+         d.answer_saving_vs_start() > result.designs[static_cast<std::size_t>(result.best_design)].answer_saving_vs_start()))
       result.best_design = k;
   }
   result.seconds = seconds_since(t0);

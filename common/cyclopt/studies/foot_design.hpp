@@ -100,6 +100,11 @@ struct DesignRun {
   double objective = 0.0;
 };
 
+// Which of a density's two fixed-foot designs answers "which foot walks best over the grid",
+// the seed's "best of the optimised models" (section 10.2); better_design decides.
+enum class DesignAnswer { design, low_speed_design };
+const char* to_string(DesignAnswer a);  // "design", "low-speed design"
+
 struct DensityDesign {
   double density = 0.0;
   // The design problem: the start foot with the density, moved into (10.1), and the problem with
@@ -122,6 +127,10 @@ struct DensityDesign {
   FootSweepSummary high, low;             // step 3 for the design and for low_speed_foot
   double saving_vs_start = 0.0, saving_vs_point = 0.0;  // of `high`; NaN without references
   double low_saving_vs_start = 0.0, low_saving_vs_point = 0.0;
+  DesignAnswer answer = DesignAnswer::design;           // better_design(high, low), set by add_savings
+  const FootSweepSummary& answer_sweep() const { return answer == DesignAnswer::design ? high : low; }
+  double answer_saving_vs_start() const { return answer == DesignAnswer::design ? saving_vs_start : low_saving_vs_start; }
+  double answer_saving_vs_point() const { return answer == DesignAnswer::design ? saving_vs_point : low_saving_vs_point; }
   double multistart_seconds = 0.0, continuation_seconds = 0.0, sweep_seconds = 0.0, seconds = 0.0;
   bool stopped = false;
 };
@@ -131,7 +140,7 @@ struct FootDesignResult {
   FootSweepSummary start_foot, point_feet;  // the references (when options.references)
   double reference_seconds = 0.0;
   std::vector<DensityDesign> designs;       // in the order of options.densities
-  int best_design = -1;                     // the density whose design saves most against the start foot
+  int best_design = -1;                     // the density whose answer saves most against the start foot
   double seconds = 0.0;
 };
 
@@ -164,8 +173,14 @@ std::vector<std::string> default_design_parameters(foot::FootModel model);
 // until it satisfies (3.21/3.24) and the HMT toe margin; `start`'s parameters after 100 draws.
 foot::FootParameters<double> draw_design_foot(const foot::FootSpec& start, const std::vector<std::string>& free,
                                               const foot::DesignBounds& bounds, double scale, std::mt19937_64& rng);
+// The better of a density's fixed-foot sweeps: the one that reached more grid speeds; of equal
+// reach, the one with the lower mean f_mech over the grid speeds both reached (the design on a
+// tie). The seed names the design optimal at the design speed; the foot optimal at a lower speed
+// can walk the whole range more cheaply (rho 10: its sweep 0.01047 against 0.01140, run D of
+// bench/results/foot_design_bench.txt), and a user asking for the best foot over the range gets it.
+DesignAnswer better_design(const FootSweepSummary& high, const FootSweepSummary& low);
 // The savings of the density's fixed-foot sweeps against the two references (NaN where a
-// reference was not swept).
+// reference was not swept), and its answer (better_design).
 void add_savings(DensityDesign& design, const std::vector<double>& speeds, const FootSweepSummary& start_foot,
                  const FootSweepSummary& point_feet);
 
