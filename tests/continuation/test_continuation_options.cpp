@@ -64,6 +64,8 @@ TEST(ContinuationOptions, ErrorsNameTheField) {
   }
   for (const Predictor p : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp})
     EXPECT_EQ(parse_predictor(to_string(p)), p);
+  // The spec's names (proto/schemas/job.schema.json lists the same enum).
+  EXPECT_EQ(predictor_names(), (std::vector<std::string>{"qp", "trivial", "trivial_then_qp"}));
 }
 
 TEST(ContinuationOptions, ParametersMustBeMonotone) {

@@ -14,10 +14,24 @@ const char* to_string(Predictor p) {
   return "?";
 }
 
+namespace {
+
+constexpr Predictor kPredictors[] = {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp};
+
+}  // namespace
+
+std::vector<std::string> predictor_names() {
+  std::vector<std::string> names;
+  for (Predictor p : kPredictors) names.emplace_back(to_string(p));
+  return names;
+}
+
 Predictor parse_predictor(const std::string& text, const std::string& field) {
-  for (Predictor p : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp})
+  for (Predictor p : kPredictors)
     if (text == to_string(p)) return p;
-  throw std::invalid_argument(field + ": must be \"qp\", \"trivial\" or \"trivial_then_qp\", got \"" + text + "\"");
+  std::string admissible;
+  for (const std::string& name : predictor_names()) admissible += (admissible.empty() ? "\"" : ", \"") + name + "\"";
+  throw std::invalid_argument(field + ": must be one of " + admissible + ", got \"" + text + "\"");
 }
 
 const char* predictor_hessian_name(bool reuse_predictor_hessian) { return reuse_predictor_hessian ? "per_point" : "per_try"; }

@@ -4,6 +4,9 @@
 // next solve, with a fixed parameter step or stepping to each requested value).
 #include "cyclopt/nlp/solver_options.hpp"
 
+#include <string>
+#include <vector>
+
 namespace cyclopt::continuation {
 
 enum class Predictor {
@@ -16,7 +19,9 @@ enum class Predictor {
   trivial_then_qp,
 };
 const char* to_string(Predictor p);
-// "qp", "trivial" or "trivial_then_qp"; anything else throws std::invalid_argument naming `field`.
+// The spec's names of every predictor, in declaration order: "qp", "trivial", "trivial_then_qp".
+std::vector<std::string> predictor_names();
+// One of predictor_names(); anything else throws std::invalid_argument naming `field` and the names.
 Predictor parse_predictor(const std::string& text, const std::string& field = "predictor");
 // The job spec's names of ContinuationOptions::reuse_predictor_hessian: "per_point" (true) and
 // "per_try" (false, Algorithm 2).

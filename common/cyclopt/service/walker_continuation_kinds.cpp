@@ -45,7 +45,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
                       {"predictor", "predictor_hessian", "fixed_step", "min_trust_region", "max_trust_region", "parameter",
                        "values", "seed_speeds", "coarse_points"});
   if (c.contains("predictor"))
-    j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", {"qp", "trivial", "trivial_then_qp"}));
+    j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", continuation::predictor_names()));
   if (c.contains("predictor_hessian"))
     j.options.reuse_predictor_hessian = enum_value(c["predictor_hessian"], "continuation.predictor_hessian",
                                                    {continuation::predictor_hessian_name(true),
