@@ -1,6 +1,7 @@
 #include "cyclopt/studies/foot_design.hpp"
 
 #include "cyclopt/foot/convexity_constraints.hpp"
+#include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/multistart.hpp"
 #include "cyclopt/nlp/solve.hpp"
@@ -391,18 +392,17 @@ DensityDesign DesignStudy::at(double rho) {
 foot::FootParameters<double> draw_design_foot(const foot::FootSpec& start, const std::vector<std::string>& free,
                                             const foot::DesignBounds& bounds, double scale, std::mt19937_64& rng) {
   const auto layout = foot::parameter_layout(start.model);
-  const foot::LinearInequalities convex = foot::convexity_constraints(start.model);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (int draw = 0; draw < 100; ++draw) {
-    foot::FootParameters<double> p = start.parameters;
+    foot::FootSpec drawn = start;
+    foot::FootParameters<double>& p = drawn.parameters;
     for (std::size_t k = 0; k < layout.size(); ++k)
       if (std::find(free.begin(), free.end(), layout[k].name) != free.end()) {
         const auto i = static_cast<Eigen::Index>(k);
         p[i] = std::clamp(p[i] * std::exp(scale * normal(rng)), layout[k].min, layout[k].max);
       }
     p = foot::project_into_design_bounds(start.model, p, bounds, free);
-    const bool toe_convex = start.model != foot::FootModel::hmt || foot::toe_convexity_margin(p) > 0.0;
-    if (toe_convex && ((convex.A * p + convex.b).array() >= 0.0).all()) return p;
+    if (foot::admissibility_violations(drawn).empty()) return p;  // convex (3.24, toe) and in range
   }
   return start.parameters;
 }
