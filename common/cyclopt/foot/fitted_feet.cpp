@@ -50,9 +50,12 @@ std::vector<std::string_view> split(std::string_view line, char sep) {
 }
 
 // Seed units to SI: lengths printed in mm, gamma_F in degrees, k in rad^-1 as they are.
-double to_si(std::string_view parameter, double table_value) {
-  if (parameter == "gamma_F") return table_value * std::numbers::pi / 180.0;
-  if (parameter.starts_with("k_")) return table_value;
+double to_si(ParameterKind kind, double table_value) {
+  switch (kind) {
+    case ParameterKind::angle: return table_value * std::numbers::pi / 180.0;
+    case ParameterKind::regularisation: return table_value;
+    case ParameterKind::length: break;
+  }
   return table_value * 1e-3;
 }
 
@@ -142,7 +145,7 @@ std::vector<FittedFoot> parse_fitted_feet(std::string_view tsv) {
       if (ec != std::errc() || end != cell.data() + cell.size() || !std::isfinite(value))
         throw std::invalid_argument(where(c) + "'" + std::string(cell) + "' is not a number");
       f.table_values.emplace(std::string(parameter), value);
-      f.spec.parameters[info - layout.begin()] = to_si(parameter, value);
+      f.spec.parameters[info - layout.begin()] = to_si(info->kind, value);
     }
     if (cells[kFlagColumn] != "-") f.flag = std::string(cells[kFlagColumn]);
     f.spec.name = f.subject + " " + f.footwear + " " + f.side + " (" + model + ", " + f.trajectory + ")";

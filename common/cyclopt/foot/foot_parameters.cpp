@@ -19,24 +19,24 @@ constexpr double kKMin = 1e-12;
 constexpr double kKMax = 1.0;
 
 constexpr std::array<ParameterInfo, hm::count> kHmLayout{{
-    {"h_F", "m", 0.0, 0.5, "height of the generating polygon (ankle above sole)"},
-    {"l_HA", "m", 0.0, 1.0, "heel H to the ankle's projection on the sole"},
-    {"l_HM", "m", 1e-3, 1.0, "heel H to the ball of the foot M (sole length)"},
-    {"k_H", "rad", kKMin, kKMax, "regularisation at the heel edge A-H"},
-    {"k_HM", "rad", kKMin, kKMax, "regularisation of the sole H-M"},
-    {"k_M", "rad", kKMin, kKMax, "regularisation at the front edge M-A"},
+    {"h_F", ParameterKind::length, "m", 0.0, 0.5, "height of the generating polygon (ankle above sole)"},
+    {"l_HA", ParameterKind::length, "m", 0.0, 1.0, "heel H to the ankle's projection on the sole"},
+    {"l_HM", ParameterKind::length, "m", 1e-3, 1.0, "heel H to the ball of the foot M (sole length)"},
+    {"k_H", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation at the heel edge A-H"},
+    {"k_HM", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation of the sole H-M"},
+    {"k_M", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation at the front edge M-A"},
 }};
 
 constexpr std::array<ParameterInfo, hmt::count> kHmtLayout{{
-    {"h_F", "m", 0.0, 0.5, "height of the generating polygon (ankle above sole)"},
-    {"l_HA", "m", 0.0, 1.0, "heel H to the ankle's projection on the sole"},
-    {"l_HM", "m", 1e-3, 1.0, "heel H to the ball of the foot M"},
-    {"l_MT", "m", 0.0, 0.5, "ball M to the toe tip T"},
-    {"gamma_F", "rad", 0.0, std::numbers::pi / 2, "toe angle at M (eq. 3.24: 0 <= gamma_F <= pi/2)"},
-    {"k_H", "rad", kKMin, kKMax, "regularisation at the heel edge A-H"},
-    {"k_HM", "rad", kKMin, kKMax, "regularisation of the sole H-M"},
-    {"k_MT", "rad", kKMin, kKMax, "regularisation of the toe segment M-T"},
-    {"k_T", "rad", kKMin, kKMax, "regularisation at the front edge T-A"},
+    {"h_F", ParameterKind::length, "m", 0.0, 0.5, "height of the generating polygon (ankle above sole)"},
+    {"l_HA", ParameterKind::length, "m", 0.0, 1.0, "heel H to the ankle's projection on the sole"},
+    {"l_HM", ParameterKind::length, "m", 1e-3, 1.0, "heel H to the ball of the foot M"},
+    {"l_MT", ParameterKind::length, "m", 0.0, 0.5, "ball M to the toe tip T"},
+    {"gamma_F", ParameterKind::angle, "rad", 0.0, std::numbers::pi / 2, "toe angle at M (eq. 3.24: 0 <= gamma_F <= pi/2)"},
+    {"k_H", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation at the heel edge A-H"},
+    {"k_HM", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation of the sole H-M"},
+    {"k_MT", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation of the toe segment M-T"},
+    {"k_T", ParameterKind::regularisation, "rad", kKMin, kKMax, "regularisation at the front edge T-A"},
 }};
 
 std::string lower(std::string_view s) {

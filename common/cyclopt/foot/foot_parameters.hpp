@@ -23,9 +23,14 @@ inline constexpr int kMaxFootParameters = 9;
 template <class S>
 using FootParameters = Eigen::Matrix<S, Eigen::Dynamic, 1, 0, kMaxFootParameters, 1>;
 
-// One entry of a parameter layout: its JSON name, unit and the range a specification may use.
+// What a foot parameter measures: a length of the generating polygon, an angle of it (gamma_F),
+// or a regularisation k of eq. (3.7) (the corners' and the sole's sharpness).
+enum class ParameterKind { length, angle, regularisation };
+
+// One entry of a parameter layout: its JSON name, kind, unit and the range a specification may use.
 struct ParameterInfo {
   std::string_view name;
+  ParameterKind kind;
   std::string_view unit;
   double min;
   double max;

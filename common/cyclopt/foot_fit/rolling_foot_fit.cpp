@@ -67,7 +67,7 @@ FootFitResult run_fit(foot::FootModel model, const std::vector<AnkleTrack>& trac
   // below the spacing of the fitted angles no sample sees the transition, so the gradient in k
   // vanishes without the fit being good. Restart once from k = kRestartK and keep the better.
   for (int i = 0; i < P; ++i) {
-    const bool regularisation = foot::parameter_layout(model)[i].name.rfind("k_", 0) == 0;
+    const bool regularisation = foot::parameter_layout(model)[i].kind == foot::ParameterKind::regularisation;
     if (!regularisation || lower[i] == upper[i] || global[i] > kCollapsedK) continue;
     Eigen::VectorXd g2 = global, l2 = local;
     g2[i] = std::clamp(kRestartK, lower[i], upper[i]);

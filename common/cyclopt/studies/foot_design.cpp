@@ -74,7 +74,7 @@ std::vector<std::string> free_foot_parameters(const walker::WalkerModel<double>&
   std::vector<std::string> moving;
   for (const std::string& name : free) {
     const auto at = std::find_if(layout.begin(), layout.end(), [&](const foot::ParameterInfo& i) { return i.name == name; });
-    const bool corner = at != layout.end() && name.rfind("k_", 0) == 0 &&
+    const bool corner = at != layout.end() && at->kind == foot::ParameterKind::regularisation &&
                         design.foot_parameters[at - layout.begin()] <= kCornerCurvature;
     if (!corner) moving.push_back(name);
   }
