@@ -10,11 +10,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace cyclopt::server::remote {
 
@@ -69,11 +71,32 @@ std::optional<SlurmJob> find_by_name(const std::string& name) {
   return found;
 }
 
-// "" once the controller has forgotten the job (MinJobAge after its end).
-std::string slurm_state(const std::string& id) {
-  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-j", id, "-o", "%T"});
-  return r.exit_code == 0 ? trim(r.output) : "";
+// The states of the Slurm jobs `ids` by one squeue call (a poll of a job's units costs one call,
+// not one per unit). A job the controller has forgotten (MinJobAge after its end) is absent.
+std::map<std::string, std::string> slurm_states(const std::vector<std::string>& ids) {
+  std::map<std::string, std::string> states;
+  if (ids.empty()) return states;
+  std::string list;
+  for (const std::string& id : ids) list += (list.empty() ? "" : ",") + id;
+  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-j", list, "-o", "%i %T"});
+  if (r.exit_code != 0) return states;  // e.g. a single id the controller no longer knows
+  std::istringstream lines(r.output);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream f(line);
+    std::string id, state;
+    if (f >> id >> state) states[id] = state;
+  }
+  return states;
 }
+
+// The state of one Slurm job, "" once the controller has forgotten it.
+std::string slurm_state(const std::map<std::string, std::string>& states, const std::string& id) {
+  const auto at = states.find(id);
+  return at == states.end() ? "" : at->second;
+}
+
+std::string slurm_state(const std::string& id) { return slurm_state(slurm_states({id}), id); }
 
 // One Slurm batch job of cyclopt-worker: the whole job, or one of its work units.
 class Unit {
@@ -104,16 +127,16 @@ class Unit {
     return false;
   }
 
-  // One look at the unit: ingests what it wrote, forwards its progress, stops it when the job
-  // stops, resubmits it when it left the queue without a result. True: the unit has ended (or
-  // the server is shutting down and leaves it running, re-attached at the next start).
-  bool poll() {
+  // One look at the unit, whose Slurm job was in `state` ("" if the controller no longer knows
+  // it): ingests what it wrote, forwards its progress, stops it when the job stops, resubmits it
+  // when it left the queue without a result. True: the unit has ended (or the server is shutting
+  // down and leaves it running, re-attached at the next start).
+  bool poll(const std::string& state) {
     ingest();
     if (const auto p = spool_.read_progress()) ctx_.report_progress(*p);
     const service::StopReason stop = ctx_.stop_reason();
     if (stop == service::StopReason::shutdown) return true;
     if (stop != service::StopReason::none) return stop_unit();
-    const std::string state = slurm_state(slurm_id_);
     if (active(state)) return false;
     ingest();
     if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
@@ -126,6 +149,8 @@ class Unit {
     submit();
     return false;
   }
+
+  const std::string& slurm_id() const { return slurm_id_; }
 
   // Asks the worker to stop, gives it a grace period, then scancel. True (the unit has ended).
   bool stop_unit() {
@@ -211,11 +236,15 @@ void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64
     for (at = 0; at < units.size(); ++at) ended[at] = units[at]->start();
     while (std::find(ended.begin(), ended.end(), false) != ended.end()) {
       std::this_thread::sleep_for(std::chrono::duration<double>(poll_seconds));
+      std::vector<std::string> ids;
+      for (std::size_t i = 0; i < units.size(); ++i)
+        if (!ended[i]) ids.push_back(units[i]->slurm_id());
+      const std::map<std::string, std::string> states = slurm_states(ids);
       for (at = 0; at < units.size(); ++at)
-        if (!ended[at]) ended[at] = units[at]->poll();
+        if (!ended[at]) ended[at] = units[at]->poll(slurm_state(states, units[at]->slurm_id()));
     }
   } catch (...) {
-    ended[at] = true;
+    if (at < units.size()) ended[at] = true;  // else squeue itself failed: every unit is still running
     for (std::size_t i = 0; i < units.size(); ++i)
       if (!ended[i]) try {
           units[i]->stop_unit();
