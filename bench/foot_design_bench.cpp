@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -78,7 +79,13 @@ int main(int argc, char** argv) {
               o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts);
   const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
   const walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
-  const studies::FootDesignResult r = studies::design_feet(start, problem, o);
+  studies::FootDesignResult r;
+  try {
+    r = studies::design_feet(start, problem, o);
+  } catch (const std::invalid_argument& e) {  // options the study refuses, named by their field
+    std::fprintf(stderr, "foot_design_bench: %s\n", e.what());
+    return 2;
+  }
   std::printf("references (%.1f s):\n", r.reference_seconds);
   print_sweep(r.start_foot);
   print_sweep(r.point_feet);
