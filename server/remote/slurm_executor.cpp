@@ -57,9 +57,13 @@ struct SlurmJob {
   std::string state;
 };
 
+// squeue -n succeeds with no lines for a name it does not know, so a failure means the controller
+// could not be asked: submitting then could start a second copy of a unit that still runs.
 std::optional<SlurmJob> find_by_name(const std::string& name) {
   const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-n", name, "-o", "%i %T"});
-  if (r.exit_code != 0) return std::nullopt;
+  if (r.exit_code != 0)
+    throw std::runtime_error("squeue failed (exit " + std::to_string(r.exit_code) + ") looking for Slurm unit " + name +
+                             ": cannot tell whether it still runs, so it is not submitted again");
   std::istringstream lines(r.output);
   std::string line;
   std::optional<SlurmJob> found;
@@ -71,16 +75,10 @@ std::optional<SlurmJob> find_by_name(const std::string& name) {
   return found;
 }
 
-// The states of the Slurm jobs `ids` by one squeue call (a poll of a job's units costs one call,
-// not one per unit). A job the controller has forgotten (MinJobAge after its end) is absent.
-std::map<std::string, std::string> slurm_states(const std::vector<std::string>& ids) {
+// "id state" lines of squeue into a map.
+std::map<std::string, std::string> parse_states(const std::string& output) {
   std::map<std::string, std::string> states;
-  if (ids.empty()) return states;
-  std::string list;
-  for (const std::string& id : ids) list += (list.empty() ? "" : ",") + id;
-  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-j", list, "-o", "%i %T"});
-  if (r.exit_code != 0) return states;  // e.g. a single id the controller no longer knows
-  std::istringstream lines(r.output);
+  std::istringstream lines(output);
   std::string line;
   while (std::getline(lines, line)) {
     std::istringstream f(line);
@@ -90,13 +88,41 @@ std::map<std::string, std::string> slurm_states(const std::vector<std::string>& 
   return states;
 }
 
-// The state of one Slurm job, "" once the controller has forgotten it.
-std::string slurm_state(const std::map<std::string, std::string>& states, const std::string& id) {
-  const auto at = states.find(id);
-  return at == states.end() ? "" : at->second;
+// What squeue says of a set of Slurm jobs: the state of each it knows; a job the controller has
+// forgotten (MinJobAge after its end) is absent. nullopt: squeue could not ask the controller
+// (down, restarting, unreachable), so nothing is known - not even that a job has ended.
+using SlurmStates = std::optional<std::map<std::string, std::string>>;
+
+// One squeue call for all of `ids` (a poll of a job's units costs one call, not one per unit).
+// `squeue -j ID` fails for a single id the controller has forgotten (several unknown ids just
+// give no lines, so a failure with several is the controller's); the list of this user's jobs then
+// tells a forgotten job from an unreachable controller.
+SlurmStates slurm_states(const std::vector<std::string>& ids) {
+  if (ids.empty()) return std::map<std::string, std::string>{};
+  std::string list;
+  for (const std::string& id : ids) list += (list.empty() ? "" : ",") + id;
+  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-j", list, "-o", "%i %T"});
+  if (r.exit_code == 0) return parse_states(r.output);
+  if (ids.size() > 1) return std::nullopt;
+  const CommandResult mine = run_command({"squeue", "-h", "-t", "all", "--me", "-o", "%i %T"});
+  if (mine.exit_code != 0) return std::nullopt;
+  std::map<std::string, std::string> states;
+  for (const auto& [id, state] : parse_states(mine.output))
+    if (std::find(ids.begin(), ids.end(), id) != ids.end()) states[id] = state;
+  return states;
 }
 
-std::string slurm_state(const std::string& id) { return slurm_state(slurm_states({id}), id); }
+// The state of one Slurm job: "" once the controller has forgotten it, nullopt if squeue failed.
+std::optional<std::string> slurm_state(const SlurmStates& states, const std::string& id) {
+  if (!states) return std::nullopt;
+  const auto at = states->find(id);
+  return at == states->end() ? "" : at->second;
+}
+
+std::optional<std::string> slurm_state(const std::string& id) { return slurm_state(slurm_states({id}), id); }
+
+// Still queued or running, or not known to have ended (squeue failed).
+bool may_run(const std::optional<std::string>& state) { return !state || active(*state); }
 
 // One Slurm batch job of cyclopt-worker: the whole job, or one of its work units.
 class Unit {
@@ -128,24 +154,28 @@ class Unit {
   }
 
   // One look at the unit, whose Slurm job was in `state` ("" if the controller no longer knows
-  // it): ingests what it wrote, forwards its progress, stops it when the job stops, resubmits it
-  // when it left the queue without a result. True: the unit has ended (or the server is shutting
-  // down and leaves it running, re-attached at the next start).
-  bool poll(const std::string& state) {
+  // it, nullopt if squeue could not say): ingests what it wrote, forwards its progress, stops it
+  // when the job stops, resubmits it when it left the queue without a result. True: the unit has
+  // ended (or the server is shutting down and leaves it running, re-attached at the next start).
+  bool poll(const std::optional<std::string>& state) {
     ingest();
     if (const auto p = spool_.read_progress()) ctx_.report_progress(*p);
     const service::StopReason stop = ctx_.stop_reason();
     if (stop == service::StopReason::shutdown) return true;
     if (stop != service::StopReason::none) return stop_unit();
-    if (active(state)) return false;
+    if (!state) {  // the worker may still run: its result counts, nothing is resubmitted
+      if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
+      return false;
+    }
+    if (active(*state)) return false;
     ingest();
     if (const auto outcome = spool_.read_outcome()) return finish(*outcome);
     if (submissions_ >= options_.max_submissions)
       throw std::runtime_error("Slurm unit " + name_ + " (Slurm job " + slurm_id_ + ") ended " +
-                               (state.empty() ? "with an unknown state" : state) + " without a result after " +
+                               (state->empty() ? "with an unknown state" : *state) + " without a result after " +
                                std::to_string(submissions_) + " submission(s)");
     std::fprintf(stderr, "cycloptd: job %lld: Slurm job %s ended %s without a result; resubmitting\n",
-                 static_cast<long long>(job_.id), slurm_id_.c_str(), state.c_str());
+                 static_cast<long long>(job_.id), slurm_id_.c_str(), state->c_str());
     submit();
     return false;
   }
@@ -156,9 +186,9 @@ class Unit {
   bool stop_unit() {
     spool_.request_cancel();
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kCancelGraceSeconds);
-    while (std::chrono::steady_clock::now() < deadline && active(slurm_state(slurm_id_)))
+    while (std::chrono::steady_clock::now() < deadline && may_run(slurm_state(slurm_id_)))
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    if (active(slurm_state(slurm_id_))) run_command({"scancel", slurm_id_});
+    if (may_run(slurm_state(slurm_id_))) run_command({"scancel", slurm_id_});
     ingest();
     return true;
   }
@@ -231,6 +261,7 @@ class Unit {
 // are stopped and its failure is rethrown (the failed one has already left the queue).
 void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64_t job_id) {
   std::vector<bool> ended(units.size(), false);
+  bool controller_lost = false;
   std::size_t at = 0;  // the unit being started or polled
   try {
     for (at = 0; at < units.size(); ++at) ended[at] = units[at]->start();
@@ -239,12 +270,18 @@ void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64
       std::vector<std::string> ids;
       for (std::size_t i = 0; i < units.size(); ++i)
         if (!ended[i]) ids.push_back(units[i]->slurm_id());
-      const std::map<std::string, std::string> states = slurm_states(ids);
+      const SlurmStates states = slurm_states(ids);
+      if (states.has_value() == controller_lost) {  // log the start and the end of an outage once
+        controller_lost = !controller_lost;
+        std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job_id),
+                     controller_lost ? "squeue cannot reach the Slurm controller; waiting for it (units keep running)"
+                                     : "squeue answers again");
+      }
       for (at = 0; at < units.size(); ++at)
         if (!ended[at]) ended[at] = units[at]->poll(slurm_state(states, units[at]->slurm_id()));
     }
   } catch (...) {
-    if (at < units.size()) ended[at] = true;  // else squeue itself failed: every unit is still running
+    if (at < units.size()) ended[at] = true;  // the unit that threw has ended
     for (std::size_t i = 0; i < units.size(); ++i)
       if (!ended[i]) try {
           units[i]->stop_unit();

@@ -11,7 +11,10 @@
 //     PREEMPTED, NODE_FAIL, a killed worker) is submitted again, up to max_submissions, then the
 //     job fails naming the unit and its last Slurm state;
 //   - server shutdown or crash leaves units running: the next start finds them by name in
-//     squeue and re-attaches instead of submitting them again.
+//     squeue and re-attaches instead of submitting them again;
+//   - while squeue cannot reach the controller (restart, outage) nothing is known to have ended:
+//     units are not resubmitted, results their workers write still count, a stop still asks
+//     the worker and scancels; a start that cannot ask squeue fails instead of submitting twice.
 
 #include "../job_executor.hpp"
 #include "slurm_options.hpp"

@@ -10,7 +10,9 @@
 #   3. kill -9 of cycloptd while a unit runs, restart: re-attached, never submitted twice;
 #   2c/3b. the same for the work units of a foot comparison: kill -9 of one foot's worker (that
 #      unit alone reruns, resuming from its journal), kill -9 of cycloptd (both re-attached);
-#   4. overhead: submission-to-start latency and wall time against the local executor.
+#   4. overhead: submission-to-start latency and wall time against the local executor;
+#   5. slurmctld stopped for a few seconds while a unit runs, then restarted: the job completes,
+#      the unit is not resubmitted (squeue failing is no sign that a unit has ended).
 # Figures are printed (bench/results/slurm_executor.txt keeps a run's output).
 #
 # usage: slurm_integration.sh CYCLOPTD CYCLOPT CYCLOPT_WORKER LOCAL_CLUSTER_SH
@@ -215,6 +217,23 @@ check_comparison "$J" "kill -9 cycloptd (units)"
 [ "$(unit_slurm_jobs "$J" foot-0)" = 1 ] && [ "$(unit_slurm_jobs "$J" foot-1)" = 1 ] ||
   fail "kill -9 cycloptd (units): a unit was submitted twice (foot-0 $(unit_slurm_jobs "$J" foot-0), foot-1 $(unit_slurm_jobs "$J" foot-1))"
 echo "kill -9 cycloptd with 2 units running: job $J done, 14/14 points, none duplicated, each unit 1 Slurm job"
+echo "== 5. the Slurm controller down while a unit runs"
+# squeue waits ~10 s (MessageTimeout) for an unreachable controller before it fails, and a poll
+# of one unit asks twice (slurm_states), so the outage lasts 30 s; 24 points at 3 s outlive it.
+J=$(submit "${SLOW/\"point_delay_ms\": 250/\"point_delay_ms\": 3000}")
+wait_for 60 bash -c "[ \$(sqlite3 -batch -noheader $WORK/slurm.db 'SELECT count(*) FROM solutions WHERE job_id = $J') -ge 4 ]" || fail "no progress"
+CTLD=$(cat "$WORK/slurm/slurmctld.pid")
+kill "$CTLD"
+wait_for 30 bash -c "! kill -0 $CTLD 2>/dev/null" || fail "slurmctld did not stop"
+echo "slurmctld stopped after $(stored "$J") points"
+sleep 30
+/usr/sbin/slurmctld -f "$WORK/slurm/slurm.conf" || fail "slurmctld did not restart"
+echo "slurmctld restarted with its saved state after $(stored "$J") points"
+check_slow_job "$J" "slurmctld outage"
+[ "$(slurm_ids "$J" | wc -l)" = 1 ] || fail "slurmctld outage: the unit was submitted $(slurm_ids "$J" | wc -l) times"
+grep -q "cannot reach the Slurm controller" "$WORK/server-slurm.log" || fail "slurmctld outage: not logged"
+grep -q "squeue answers again" "$WORK/server-slurm.log" || fail "slurmctld outage: its end not logged"
+
 [ "$(sqlite3 "$WORK/slurm.db" 'PRAGMA integrity_check')" = ok ] || fail "integrity_check"
 echo "integrity_check ok"
 stop_server
