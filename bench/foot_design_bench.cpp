@@ -119,8 +119,9 @@ int main(int argc, char** argv) {
       std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
                   100 * d.low_saving_vs_point);
     }
-    std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s\n",
-                d.multistart_seconds, d.continuation_seconds, d.sweep_seconds);
+    std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s after it"
+                " (the design's %.1f s from the start of the continuation, the low-speed design's %.1f s)\n",
+                d.multistart_seconds, d.continuation_seconds, d.sweep_seconds, d.high.seconds, d.low.seconds);
     std::printf("  answer: the %s (studies::better_design)\n", studies::to_string(d.answer));
     std::printf("rho %.4g: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/%zu, wall %.1f s\n", d.density,
                 100 * d.answer_saving_vs_start(), 100 * d.answer_saving_vs_point(), d.answer_sweep().speeds_found, n,

@@ -143,7 +143,8 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   std::printf("small foot_design job: %.1f s, %zu rows\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), stored.size());
   for (const std::string& s : steps) std::printf("  progress: %s\n", s.c_str());
-  EXPECT_TRUE(steps.count("rho 10: free-foot continuation")) << "progress names the density and phase";
+  EXPECT_TRUE(steps.count("rho 10: free-foot continuation, the design's fixed-foot sweep beside it"))
+      << "progress names the density and phase";
   EXPECT_GE(multistart_reports, 1) << "progress counts the design starts";
   auto curves = by_curve(stored);
   ASSERT_EQ(curves[records::kDesignCurve].size(), 1u);

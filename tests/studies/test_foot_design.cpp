@@ -1,5 +1,6 @@
-// The foot-design study's option checks (studies/foot_design.hpp): each bad option is refused
-// before anything is solved, naming the option.
+// The foot-design study (studies/foot_design.hpp): each bad option is refused before anything is
+// solved, naming the option; the drawn start feet; the answer rule; and, on a small study, that
+// its two threads call the caller one call at a time and never after the study returned.
 #include "cyclopt/studies/foot_design.hpp"
 #include "cyclopt/foot/convexity_constraints.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
@@ -7,8 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <string>
+#include <thread>
 
 using namespace cyclopt;
 using namespace cyclopt::studies;
@@ -133,4 +139,146 @@ TEST(FootDesign, TheAnswerIsTheDesignThatReachesMoreSpeedsThenTheCheaperOne) {
   EXPECT_NEAR(d.answer_saving_vs_point(), 1 - 0.031 / 0.120, 1e-12);
   EXPECT_NEAR(d.saving_vs_start, 1 - 0.035 / 0.060, 1e-12);
   EXPECT_STREQ(to_string(d.answer), "low-speed design");
+}
+
+namespace {
+
+// The small study of tests/service/slurm_integration.sh's foot_design job: P = 50, two design
+// starts from the start foot itself, 2.2 and 2.3 m/s, one multistart run per sweep seed speed.
+FootDesignOptions runnable() {
+  FootDesignOptions o = small();
+  o.references = false;
+  o.starts = 2;
+  o.seed = 2;
+  o.scale = 0.02;
+  o.foot_scale = 0.0;
+  o.constants.points = 50;
+  o.sweep.starts = 1;
+  o.sweep.seed = 2;
+  o.sweep.scale = 0.02;
+  o.sweep.seed_speeds = {2.3};
+  o.sweep.continuation.min_trust_region = 0.05;
+  o.sweep.continuation.corrector.max_iterations = 500;
+  o.sweep.corrector_max_iterations = 60;
+  return o;
+}
+
+// Watches the caller's side of the study: calls that overlap, and calls after `closed`.
+struct CallbackWatch {
+  std::atomic<int> inside{0}, overlaps{0}, calls{0}, late{0};
+  std::atomic<bool> closed{false};
+  struct Call {
+    CallbackWatch& w;
+    explicit Call(CallbackWatch& watch) : w(watch) {
+      if (w.inside.fetch_add(1) > 0) ++w.overlaps;
+      if (w.closed) ++w.late;
+      ++w.calls;
+      std::this_thread::sleep_for(std::chrono::microseconds(50));  // widen the window for an overlap
+    }
+    ~Call() { --w.inside; }
+  };
+};
+
+// Sweep journals in memory, keyed by part; each journal reads a snapshot taken when it is made
+// (as the service's sweep_journal does), its records go to the shared maps.
+struct MemoryJournals {
+  std::mutex m;
+  std::map<std::string, std::map<std::pair<int, int>, nlp::SolverSummary>> solves;
+  std::map<std::string, std::map<int, continuation::ContinuationResult>> runs;
+  std::vector<std::string> parts;
+
+  SweepJournal make(const std::string& part, CallbackWatch& watch) {
+    const std::lock_guard lock(m);
+    parts.push_back(part);
+    const auto solved = std::make_shared<const std::map<std::pair<int, int>, nlp::SolverSummary>>(solves[part]);
+    const auto ran = std::make_shared<const std::map<int, continuation::ContinuationResult>>(runs[part]);
+    SweepJournal j;
+    j.find_solve = [solved](int batch, int start) -> std::optional<nlp::SolverSummary> {
+      const auto it = solved->find({batch, start});
+      return it == solved->end() ? std::nullopt : std::optional(it->second);
+    };
+    j.find_run = [ran](int run) -> std::optional<continuation::ContinuationResult> {
+      const auto it = ran->find(run);
+      return it == ran->end() ? std::nullopt : std::optional(it->second);
+    };
+    j.record_solve = [this, part, &watch](int batch, int start, const nlp::SolverSummary& r) {
+      const CallbackWatch::Call call(watch);
+      const std::lock_guard lock(m);
+      solves[part][{batch, start}] = r;
+    };
+    j.record_run = [this, part, &watch](int run, const continuation::ContinuationResult& r) {
+      const CallbackWatch::Call call(watch);
+      const std::lock_guard lock(m);
+      runs[part][run] = r;
+    };
+    return j;
+  }
+};
+
+// Every callback of `o` through `watch`; on_density also records the phases.
+void watch_callbacks(FootDesignOptions& o, CallbackWatch& watch, MemoryJournals& journals, std::vector<DesignPhase>& phases,
+                     std::function<bool(DesignPhase)> go_on = [](DesignPhase) { return true; }) {
+  o.on_step = [&watch](const std::string&) {
+    const CallbackWatch::Call call(watch);
+    return true;
+  };
+  o.on_density = [&watch, &phases, go_on](const DensityDesign&, DesignPhase phase) {
+    const CallbackWatch::Call call(watch);
+    phases.push_back(phase);
+    return go_on(phase);
+  };
+  o.on_multistart_progress = [&watch](double, int, double) { const CallbackWatch::Call call(watch); };
+  o.sweep.on_progress = [&watch](const SweepProgress&) { const CallbackWatch::Call call(watch); };
+  o.sweep.continuation.corrector.on_iteration = [&watch](const nlp::IterationReport&) {
+    const CallbackWatch::Call call(watch);
+    return true;
+  };
+  o.journal = [&journals, &watch](const std::string& part) { return journals.make(part, watch); };
+}
+
+}  // namespace
+
+TEST(FootDesign, ItsTwoThreadsCallTheCallerOneAtATimeAndNeverAfterItReturned) {
+  // The design's fixed-foot sweep runs on a thread of its own beside the free-foot continuation
+  // and the low-speed sweep (DesignStudy::at); the caller (the service: one job context) must
+  // still see one call at a time, and none once design_density has returned.
+  FootDesignOptions o = runnable();
+  CallbackWatch watch;
+  MemoryJournals journals;
+  std::vector<DesignPhase> phases;
+  watch_callbacks(o, watch, journals, phases);
+  const DensityDesign d = design_density(10, p2(), {}, o);
+  watch.closed = true;
+  ASSERT_GE(d.best, 0) << "the small study found no admissible design";
+  EXPECT_FALSE(d.stopped);
+  EXPECT_GT(d.high.speeds_found, 0);
+  EXPECT_GT(d.low.speeds_found, 0);
+  EXPECT_EQ(phases, (std::vector<DesignPhase>{DesignPhase::multistart, DesignPhase::free_foot, DesignPhase::high_sweep,
+                                              DesignPhase::low_sweep}));
+  EXPECT_TRUE(std::count(journals.parts.begin(), journals.parts.end(), "rho 10/high"));
+  EXPECT_GT(watch.calls.load(), 100);
+  EXPECT_EQ(watch.overlaps.load(), 0) << "callbacks overlapped";
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(watch.late.load(), 0);
+
+  // Stopped by the caller after step 2 (design multistart and free-foot runs replayed from the
+  // journal), the design's sweep, still solving beside it, is abandoned before the study returns.
+  journals.solves.erase("rho 10/high");
+  journals.runs.erase("rho 10/high");
+  CallbackWatch stopped_watch;
+  phases.clear();
+  FootDesignOptions stop = runnable();
+  stop.sweep.starts = 80;  // a design sweep of ~20 s (2 cores), unless abandoned
+  watch_callbacks(stop, stopped_watch, journals, phases, [](DesignPhase p) { return p != DesignPhase::free_foot; });
+  const auto t0 = std::chrono::steady_clock::now();
+  const DensityDesign s = design_density(10, p2(), {}, stop);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  stopped_watch.closed = true;
+  EXPECT_TRUE(s.stopped);
+  EXPECT_EQ(phases, (std::vector<DesignPhase>{DesignPhase::multistart, DesignPhase::free_foot}));
+  EXPECT_LT(seconds, 5.0) << "the design's sweep was not abandoned";
+  EXPECT_EQ(stopped_watch.overlaps.load(), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_EQ(stopped_watch.late.load(), 0) << "the design's sweep called back after the study returned";
+  std::printf("first study %d callbacks; the stopped one returned after %.2f s\n", watch.calls.load(), seconds);
 }

@@ -13,10 +13,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <future>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -146,11 +150,48 @@ double saving(const std::vector<double>& speeds, const FootSweepSummary& referen
   return summarise_feet(speeds, {reference, foot}, 0).feet[1].saving;
 }
 
+// f, called one call at a time under `m` (an empty f stays empty).
+template <class R, class... A>
+std::function<R(A...)> one_at_a_time(std::function<R(A...)> f, std::mutex& m) {
+  if (!f) return f;
+  return [f = std::move(f), &m](A... a) -> R {
+    const std::lock_guard lock(m);
+    return f(a...);
+  };
+}
+
+// The caller's callbacks for a study that runs on two threads (the design's fixed-foot sweep beside
+// step 2 and the low-speed sweep, DesignStudy::at): every call takes `m`, so the caller sees one
+// call at a time, as from one thread. The corrector's should_stop is polled from any thread already.
+FootDesignOptions one_at_a_time(const FootDesignOptions& o, std::mutex& m) {
+  FootDesignOptions s = o;
+  s.on_step = one_at_a_time(o.on_step, m);
+  s.on_density = one_at_a_time(o.on_density, m);
+  s.on_reference = one_at_a_time(o.on_reference, m);
+  s.on_multistart_progress = one_at_a_time(o.on_multistart_progress, m);
+  s.sweep.on_progress = one_at_a_time(o.sweep.on_progress, m);
+  s.sweep.continuation.corrector.on_iteration = one_at_a_time(o.sweep.continuation.corrector.on_iteration, m);
+  if (o.journal)
+    s.journal = [journal = o.journal, &m](const std::string& part) {
+      SweepJournal j;
+      {
+        const std::lock_guard lock(m);
+        j = journal(part);
+      }
+      j.record_solve = one_at_a_time(j.record_solve, m);
+      j.record_run = one_at_a_time(j.record_run, m);
+      return j;
+    };
+  return s;
+}
+
 class DesignStudy {
  public:
   DesignStudy(const foot::FootSpec& start, const walker::GaitProblemOptions& problem, const FootDesignOptions& o,
               std::vector<std::string> free)
-      : start_(start), problem_(problem), o_(o), free_(std::move(free)) {}
+      : start_(start), problem_(problem), o_(one_at_a_time(o, callbacks_)), free_(std::move(free)) {}
+  DesignStudy(const DesignStudy&) = delete;
+  DesignStudy& operator=(const DesignStudy&) = delete;
 
   DensityDesign at(double rho);
 
@@ -170,9 +211,10 @@ class DesignStudy {
     return po;
   }
 
+  std::mutex callbacks_;  // o_'s callbacks: one call at a time from the study's two threads
   const foot::FootSpec& start_;
   const walker::GaitProblemOptions& problem_;
-  const FootDesignOptions& o_;
+  const FootDesignOptions o_;
   const std::vector<std::string> free_;
 };
 
@@ -282,15 +324,42 @@ DensityDesign DesignStudy::at(double rho) {
   if (d.best < 0) return d;
   const DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];
 
-  // 2. Free-foot continuation downwards from the design speed.
+  // 3a. The fixed-foot sweep of the design, on a thread of its own beside steps 2 and 3b: it needs
+  // only the design, and steps 2 and 3b leave a core idle while they continue (one thread) - run E
+  // of bench/results/foot_design_bench.txt: 155 % CPU over the study. Each sweep starts from its
+  // foot's own optimal gait (the free-foot optimum is a KKT point of the fixed-foot problem too),
+  // then adds the seed multistarts: without it the sweep of the rho 10 design reached f_mech
+  // 0.0413 at 2.3 m/s where the design has 0.0344. Its progress is not reported (step 2's and
+  // 3b's are); its solves still count iterations and stop with the study.
   const Clock::time_point t1 = Clock::now();
-  if (!step(name + ": free-foot continuation")) return d.stopped = true, d;
+  if (!step(name + ": free-foot continuation, the design's fixed-foot sweep beside it")) return d.stopped = true, d;
+  const int gait_count = shape.gait_parameter_count();
+  std::atomic<bool> abandon_high{false};
+  SpeedSweepOptions high_options = journaled(o_, name + "/high", {{o_.design_speed, best.z.head(gait_count)}});
+  high_options.on_progress = nullptr;
+  high_options.continuation.corrector.should_stop = [&abandon_high, stop = high_options.continuation.corrector.should_stop] {
+    return abandon_high.load() || (stop && stop());
+  };
+  std::future<FootSweepSummary> high = std::async(std::launch::async, [&, high_options] {
+    return sweep_foot(name + " design", model_of(best.foot), problem_, high_options);
+  });
+  // Whichever way this function leaves, the design's sweep has ended before its locals go.
+  const struct JoinHigh {
+    std::atomic<bool>& abandon;
+    std::future<FootSweepSummary>& sweep;
+    ~JoinHigh() {
+      if (!sweep.valid()) return;
+      abandon = true;
+      sweep.wait();
+    }
+  } join_high{abandon_high, high};
+
+  // 2. Free-foot continuation downwards from the design speed.
   std::vector<double> grid{o_.design_speed};
   for (auto it = o_.sweep.speeds.rbegin(); it != o_.sweep.speeds.rend(); ++it)
     if (*it < o_.design_speed - 1e-12) grid.push_back(*it);
   d.low_speed_foot = best.foot;
   d.low_speed = o_.design_speed;
-  const int gait_count = shape.gait_parameter_count();
   Eigen::VectorXd low_speed_gait = best.z.head(gait_count);
   if (grid.size() >= 2) {
     ContinuationOptions co = o_.sweep.continuation;
@@ -368,22 +437,18 @@ DensityDesign DesignStudy::at(double rho) {
   d.continuation_seconds = seconds_since(t1);
   if (!finished(d, DesignPhase::free_foot)) return d.stopped = true, d;
 
-  // 3. Fixed-foot sweeps of the feet optimal at the highest and the lowest speed.
+  // 3b. The fixed-foot sweep of the foot optimal at the lowest speed, then the design's (3a) joined.
   const Clock::time_point t2 = Clock::now();
-  if (!step(name + ": fixed-foot sweep of the design")) return d.stopped = true, d;
-  // Each sweep starts from its foot's own optimal gait (the free-foot optimum is a KKT point of the
-  // fixed-foot problem too), then adds the seed multistarts: without it the sweep of the rho 10
-  // design reached f_mech 0.0413 at 2.3 m/s where the design has 0.0344.
-  d.high = sweep_foot(name + " design", model_of(best.foot), problem_,
-                      journaled(o_, name + "/high", {{o_.design_speed, best.z.head(gait_count)}}));
-  d.sweep_seconds = seconds_since(t2);
-  if (!finished(d, DesignPhase::high_sweep)) return d.stopped = true, d;
   if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
   d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_,
                      journaled(o_, name + "/low", {{d.low_speed, low_speed_gait}}));
+  if (high.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
+      !step(name + ": fixed-foot sweep of the design (the low-speed design's has ended)"))
+    return d.stopped = true, d;
+  d.high = high.get();  // rethrows what the design's sweep threw
   d.sweep_seconds = seconds_since(t2);
   d.seconds = seconds_since(t0);
-  if (!finished(d, DesignPhase::low_sweep)) d.stopped = true;
+  if (!finished(d, DesignPhase::high_sweep) || !finished(d, DesignPhase::low_sweep)) d.stopped = true;
   return d;
 }
 

@@ -15,7 +15,8 @@
 //      warm-started solves from (6.24) at the grid speeds below, down to the first without a KKT point;
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
 //      grid speed reached (Fig. 10.2a green and blue), each started from that foot's optimal gait
-//      (SpeedSweepOptions::known_gaits) before its seed multistarts.
+//      (SpeedSweepOptions::known_gaits) before its seed multistarts. The design's sweep needs only
+//      step 1, so it runs on a thread of its own beside step 2 and the low-speed sweep.
 // The references, swept once with the same options: the start foot with its own masses (Table
 // 5.1) and point feet (Table D.1). Savings are those of foot_comparison.hpp: 1 - mean f_mech of
 // the design / mean f_mech of the reference, over the grid speeds both reach.
@@ -67,7 +68,10 @@ struct FootDesignOptions {
   std::function<SweepJournal(const std::string& part)> journal;
   // Results as they are found, for a caller that stores them; returning false stops the study.
   // on_reference: each reference sweep (part as for the journal, the walker swept); on_density: a
-  // density's result so far after each of its phases ends.
+  // density's result so far after each of its phases ends (high_sweep and low_sweep both after the
+  // later of the two sweeps). Every callback here, the sweep's on_progress and its corrector's
+  // on_iteration are called one call at a time, though from the study's two threads (step 3);
+  // the design's sweep reports no on_progress.
   std::function<bool(const std::string& part, const walker::WalkerModel<double>& model, const FootSweepSummary& sweep)>
       on_reference;
   std::function<bool(const DensityDesign& so_far, DesignPhase finished)> on_density;
@@ -131,6 +135,9 @@ struct DensityDesign {
   const FootSweepSummary& answer_sweep() const { return answer == DesignAnswer::design ? high : low; }
   double answer_saving_vs_start() const { return answer == DesignAnswer::design ? saving_vs_start : low_saving_vs_start; }
   double answer_saving_vs_point() const { return answer == DesignAnswer::design ? saving_vs_point : low_saving_vs_point; }
+  // Wall time of step 1, of step 2, and from the end of step 2 until both sweeps of step 3 ended
+  // (the design's began with step 2: high.seconds, low.seconds are each sweep's own); they add up
+  // to `seconds`.
   double multistart_seconds = 0.0, continuation_seconds = 0.0, sweep_seconds = 0.0, seconds = 0.0;
   bool stopped = false;
 };
