@@ -33,9 +33,18 @@ class MemoryJob final : public JobContext {
   }
   void count_iterations(int) override {}
   void announce(int) override {}
-  void add_curve(int curve, const std::string&, const std::string&) override { curves.push_back(curve); }
-  bool store_point(const storage::SolutionPoint& p) override { return points.insert(p.key).second; }
-  std::set<storage::PointKey> already_stored_points() override { return points; }
+  void add_curve(int curve, const std::string&, const std::string&) override {
+    const std::lock_guard<std::mutex> lock(mutex);
+    curves.push_back(curve);
+  }
+  bool store_point(const storage::SolutionPoint& p) override {
+    const std::lock_guard<std::mutex> lock(mutex);  // a job context takes calls from all its units at once
+    return points.insert(p.key).second;
+  }
+  std::set<storage::PointKey> already_stored_points() override {
+    const std::lock_guard<std::mutex> lock(mutex);
+    return points;
+  }
   void store_checkpoint(const std::string& key, const std::string& value) override {
     const std::lock_guard<std::mutex> lock(mutex);  // units in parallel store at once
     checkpoints[key] = value;
