@@ -57,24 +57,6 @@ struct SlurmJob {
   std::string state;
 };
 
-// squeue -n succeeds with no lines for a name it does not know, so a failure means the controller
-// could not be asked: submitting then could start a second copy of a unit that still runs.
-std::optional<SlurmJob> find_by_name(const std::string& name) {
-  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-n", name, "-o", "%i %T"});
-  if (r.exit_code != 0)
-    throw std::runtime_error("squeue failed (exit " + std::to_string(r.exit_code) + ") looking for Slurm unit " + name +
-                             ": cannot tell whether it still runs, so it is not submitted again");
-  std::istringstream lines(r.output);
-  std::string line;
-  std::optional<SlurmJob> found;
-  while (std::getline(lines, line)) {
-    std::istringstream f(line);
-    SlurmJob j;
-    if (f >> j.id >> j.state && (!found || active(j.state))) found = j;  // an active one wins
-  }
-  return found;
-}
-
 // "id state" lines of squeue into a map.
 std::map<std::string, std::string> parse_states(const std::string& output) {
   std::map<std::string, std::string> states;
@@ -86,6 +68,19 @@ std::map<std::string, std::string> parse_states(const std::string& output) {
     if (f >> id >> state) states[id] = state;
   }
   return states;
+}
+
+// squeue -n succeeds with no lines for a name it does not know, so a failure means the controller
+// could not be asked: submitting then could start a second copy of a unit that still runs.
+std::optional<SlurmJob> find_by_name(const std::string& name) {
+  const CommandResult r = run_command({"squeue", "-h", "-t", "all", "-n", name, "-o", "%i %T"});
+  if (r.exit_code != 0)
+    throw std::runtime_error("squeue failed (exit " + std::to_string(r.exit_code) + ") looking for Slurm unit " + name +
+                             ": cannot tell whether it still runs, so it is not submitted again");
+  std::optional<SlurmJob> found;
+  for (const auto& [id, state] : parse_states(r.output))
+    if (!found || active(state)) found = SlurmJob{id, state};  // an active one wins
+  return found;
 }
 
 // What squeue says of a set of Slurm jobs: the state of each it knows; a job the controller has
