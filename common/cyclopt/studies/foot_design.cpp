@@ -190,8 +190,6 @@ class DesignStudy {
   DesignStudy(const foot::FootSpec& start, const walker::GaitProblemOptions& problem, const FootDesignOptions& o,
               std::vector<std::string> free)
       : start_(start), problem_(problem), o_(one_at_a_time(o, callbacks_)), free_(std::move(free)) {}
-  DesignStudy(const DesignStudy&) = delete;
-  DesignStudy& operator=(const DesignStudy&) = delete;
 
   DensityDesign at(double rho);
 
