@@ -1,7 +1,8 @@
 #pragma once
 // The SQP/Ipopt configurations the walker benchmarks compare, by name: sqp (seed Table 6.2,
 // W_1 = I then (6.25)), sqp-dh (W_1 from (6.24) on the difference Hessian), ipopt (the adapter's
-// defaults), sqp-dhK (as sqp-dh, a fresh (6.24) every K iterations). MaxIter 3000 as the seed's chapter-8 experiments.
+// defaults), sqp-dhK (as sqp-dh, a fresh (6.24) every K iterations); a suffix -wN sets the SQP's
+// progress_window to N (e.g. sqp-dh50-w200). MaxIter 3000 as the seed's chapter-8 experiments.
 #include "cyclopt/nlp/solver_options.hpp"
 
 #include <cstdio>
@@ -10,8 +11,11 @@
 
 namespace cyclopt::bench {
 
-inline nlp::SolverOptions solver_configuration(const std::string& name) {
+inline nlp::SolverOptions solver_configuration(const std::string& name_and_window) {
+  const std::size_t w = name_and_window.find("-w");
+  const std::string name = name_and_window.substr(0, w);
   nlp::SolverOptions o = nlp::seed_table_6_2_options();
+  if (w != std::string::npos) o.sqp.progress_window = std::atoi(name_and_window.c_str() + w + 2);
   o.max_iterations = 3000;  // as the seed for chapter 8 (footnote 1 of section 8.1)
   if (name == "sqp") return o;
   if (name == "sqp-dh") {
@@ -27,7 +31,8 @@ inline nlp::SolverOptions solver_configuration(const std::string& name) {
     o.solver = nlp::SolverKind::ipopt;
     return o;
   }
-  std::fprintf(stderr, "configuration '%s': expected sqp, sqp-dh or ipopt\n", name.c_str());
+  std::fprintf(stderr, "configuration '%s': expected sqp, sqp-dh, sqp-dhK or ipopt, each optionally with -wN\n",
+               name_and_window.c_str());
   std::exit(1);
 }
 

@@ -1,4 +1,5 @@
 // The solve() entry point, option parsing/validation and the iteration callback.
+#include "autodiff_problem.hpp"
 #include "hock_schittkowski.hpp"
 
 #include "cyclopt/nlp/difference_hessian.hpp"
@@ -50,6 +51,12 @@ TEST(SolverOptions, ValidationNamesTheField) {
   o = {};
   o.ipopt.difference_hessian_every = -1;
   EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("ipopt.difference_hessian_every"), std::string::npos);
+  o = {};
+  o.sqp.progress_window = -1;
+  EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("sqp.progress_window"), std::string::npos);
+  o = {};
+  o.sqp.progress_min_decrease = 1.0;
+  EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("sqp.progress_min_decrease"), std::string::npos);
   o = {};
   o.ipopt.mu_strategy = "probing";
   EXPECT_NE(message_of([&] { solve(*problem, o, vec({-1.2, 1})); }).find("ipopt.mu_strategy"), std::string::npos);
@@ -202,6 +209,47 @@ TEST(SqpInitialHessian, DifferenceHessianRefreshReachesThePublishedOptima) {
             << tp.name << " " << to_string(kind) << ": no refresh seen";
       }
     }
+  }
+}
+
+// min 100 + |x|: the gradient is +-1 everywhere but at the minimiser, so no iterate is a KKT point
+// and the SQP creeps towards x = 0 with ever smaller steps, as the distant-start runs of f_mech do
+// along its kinks.
+struct KinkAtTheMinimum {
+  static constexpr int n = 1, m_eq = 0, m_in = 0;
+  template <class T>
+  static void evaluate(const T* x, T& f, T*, T*) {
+    using std::abs;
+    f = 100.0 + abs(x[0]);
+  }
+};
+
+// SqpOptions::progress_window ends such a run as `stalled` once the objective has fallen by less than
+// progress_min_decrease relative over the window; runs that converge are not touched.
+TEST(SqpProgressWindow, EndsARunWithoutProgressAndSparesConvergingRuns) {
+  SolverOptions o = seed_table_6_2_options();
+  cyclopt::nlp::testing::AutodiffProblem<KinkAtTheMinimum> kink;
+  const SolverSummary creeping = solve(kink, o, vec({0.3}));
+  EXPECT_NE(creeping.termination, Termination::stalled) << creeping.message;
+  EXPECT_GT(creeping.iterations, 8) << creeping.message;
+  o.sqp.progress_window = 5;
+  const SolverSummary s = solve(kink, o, vec({0.3}));
+  EXPECT_EQ(s.termination, Termination::stalled) << s.message;
+  EXPECT_FALSE(s.success());
+  EXPECT_STREQ(to_string(s.termination), "stalled");
+  EXPECT_EQ(s.iterations, 6) << s.message;  // the first window that can be compared: iterations 1 .. 6
+  EXPECT_NE(s.message.find("no progress over 5 iterations"), std::string::npos) << s.message;
+  EXPECT_LT(s.objective, 100.3);
+  for (const TestProblem& tp : hock_schittkowski_problems()) {
+    auto problem = tp.make();
+    SolverOptions plain;
+    plain.solver = SolverKind::sqp;
+    const SolverSummary reference = solve(*problem, plain, tp.x0);
+    if (!reference.success()) continue;
+    plain.sqp.progress_window = 50;
+    const SolverSummary windowed = solve(*problem, plain, tp.x0);
+    EXPECT_EQ(windowed.termination, reference.termination) << tp.name << ": " << windowed.message;
+    EXPECT_EQ(windowed.iterations, reference.iterations) << tp.name;
   }
 }
 

@@ -15,6 +15,7 @@ const char* to_string(Termination t) {
     case Termination::evaluation_failure: return "evaluation_failure";
     case Termination::user_stop: return "user_stop";
     case Termination::numerical_failure: return "numerical_failure";
+    case Termination::stalled: return "stalled";
   }
   return "unknown";
 }
@@ -71,6 +72,8 @@ void validate(const SolverOptions& o) {
   require(!std::isnan(s.objective_limit), "sqp.objective_limit", "a number (-infinity for no limit)");
   require(s.max_backtracking_steps >= 1, "sqp.max_backtracking_steps", ">= 1");
   require(s.difference_hessian_every >= 0, "sqp.difference_hessian_every", ">= 0 (0: never)");
+  require(s.progress_window >= 0, "sqp.progress_window", ">= 0 (0: never)");
+  require(s.progress_min_decrease > 0 && s.progress_min_decrease < 1, "sqp.progress_min_decrease", "in (0, 1)");
 }
 
 SolverOptions seed_table_6_2_options() {

@@ -62,6 +62,7 @@ enum class Termination {
   evaluation_failure,   // could not evaluate at (or near) the start point
   user_stop,
   numerical_failure,
+  stalled,              // no progress over SqpOptions::progress_window iterations (the last value)
 };
 
 const char* to_string(Termination t);

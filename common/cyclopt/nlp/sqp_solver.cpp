@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace cyclopt::nlp {
 namespace {
@@ -85,6 +86,8 @@ class SqpRun {
     return lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
   }
   ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
+  // SqpOptions::progress_window: records `latest` and ends the run (stalled) without progress.
+  bool stalled_over_window(const IterationReport& latest);
   void finish();
 
   const SolverOptions& options_;
@@ -105,6 +108,7 @@ class SqpRun {
   double q_reduction_ = 0.0;
   double step_bound_ = kInfinity;  // box on d in (6.7), see line_search
   int short_steps_ = 0;  // consecutive accepted steps below kShortStep
+  std::vector<IterationReport> history_;  // of iterations 1, 2, ... (only with sqp_.progress_window > 0)
 };
 
 ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& inequalities) const {
@@ -361,6 +365,7 @@ void SqpRun::run(const VectorXd& x0) {
       stop(Termination::user_stop, "stopped by on_iteration");
       break;
     }
+    if (stalled_over_window(report)) break;
   }
   finish();
 }
@@ -375,6 +380,30 @@ MatrixXd SqpRun::restarted_hessian(const VectorXd& step, const VectorXd& gradien
   if (sqp_.difference_hessian)
     if (const auto H = difference_hessian()) return clamped_hessian(*H);
   return scaled_identity_update(step, gradient_change);
+}
+
+bool SqpRun::stalled_over_window(const IterationReport& latest) {
+  const int window = sqp_.progress_window;
+  if (window == 0) return false;
+  history_.push_back(latest);
+  if (static_cast<int>(history_.size()) <= window) return false;
+  const auto window_begin = history_.end() - window;
+  const IterationReport& before = *(window_begin - 1);
+  const auto kkt_less = [](const IterationReport& a, const IterationReport& b) { return a.kkt_error < b.kkt_error; };
+  const double kkt_in_window = std::min_element(window_begin, history_.end(), kkt_less)->kkt_error;
+  const double kkt_before = std::min_element(history_.begin(), window_begin, kkt_less)->kkt_error;
+  const double decrease = before.objective - latest.objective;
+  if (decrease >= sqp_.progress_min_decrease * std::max(std::abs(latest.objective), 1e-8) ||
+      latest.constraint_violation < 0.5 * before.constraint_violation || kkt_in_window < 0.5 * kkt_before)
+    return false;
+  if (is_kkt_point()) return false;  // step 2 of the next iteration ends the run as converged
+  char message[200];
+  std::snprintf(message, sizeof message,
+                "no progress over %d iterations: f %.6g -> %.6g, violation %.1e -> %.1e, smallest KKT error %.1e -> %.1e",
+                window, before.objective, latest.objective, before.constraint_violation, latest.constraint_violation, kkt_before,
+                kkt_in_window);
+  stop(Termination::stalled, message);
+  return true;
 }
 
 void SqpRun::finish() {

@@ -122,7 +122,7 @@ json summary_to_json(const nlp::SolverSummary& s) {
 nlp::SolverSummary summary_from_json(const json& j) {
   nlp::SolverSummary s;
   const int t = j.at("termination").get<int>();
-  if (t < 0 || t > static_cast<int>(nlp::Termination::numerical_failure))
+  if (t < 0 || t > static_cast<int>(nlp::Termination::stalled))
     throw json::other_error::create(501, "termination out of range", &j);
   s.termination = static_cast<nlp::Termination>(t);
   s.message = j.at("message").get<std::string>();
