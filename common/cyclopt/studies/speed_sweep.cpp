@@ -171,6 +171,7 @@ nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& mode
   const walker::GaitProblemOptions po = at_speed(v);
   nlp::MultistartOptions mo;
   mo.solver = walker::distant_start_solver(o_.continuation.corrector);
+  mo.solver.sqp.progress_window = walker::kMultistartProgressWindow;
   const int batch = batches_++;
   std::atomic<int> resumed{0};
   journal_multistart(mo, o_.journal, batch, &resumed);
