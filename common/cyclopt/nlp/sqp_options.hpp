@@ -47,9 +47,9 @@ struct SqpOptions {
   // > 0: the run ends as `stalled` when, over the last progress_window iterations, the objective
   // fell by less than progress_min_decrease * max(|f|, 1e-8), the constraint violation did not
   // halve and the smallest KKT error did not fall below half the smallest before (not in the
-  // seed; the last test spares runs in their final convergence, where f no longer changes). Meant for solves from distant starts, whose runs that end at
-  // MaxIter crawl along the kinks of f_mech for thousands of iterations without reaching a KKT
-  // point; 0: never.
+  // seed; the last test spares runs in their final convergence, where f no longer changes).
+  // Meant for solves from distant starts, whose runs that end at MaxIter crawl along the kinks of
+  // f_mech for thousands of iterations without reaching a KKT point; 0: never.
   int progress_window = 0;
   double progress_min_decrease = 1e-2;  // in (0, 1)
   std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,

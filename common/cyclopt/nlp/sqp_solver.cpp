@@ -109,6 +109,7 @@ class SqpRun {
   double step_bound_ = kInfinity;  // box on d in (6.7), see line_search
   int short_steps_ = 0;  // consecutive accepted steps below kShortStep
   std::vector<IterationReport> history_;  // of iterations 1, 2, ... (only with sqp_.progress_window > 0)
+  double smallest_kkt_before_window_ = kInfinity;  // over history_ before its last progress_window entries
 };
 
 ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& inequalities) const {
@@ -391,7 +392,9 @@ bool SqpRun::stalled_over_window(const IterationReport& latest) {
   const IterationReport& before = *(window_begin - 1);
   const auto kkt_less = [](const IterationReport& a, const IterationReport& b) { return a.kkt_error < b.kkt_error; };
   const double kkt_in_window = std::min_element(window_begin, history_.end(), kkt_less)->kkt_error;
-  const double kkt_before = std::min_element(history_.begin(), window_begin, kkt_less)->kkt_error;
+  // Called every iteration, so `before` is the one entry that has just left the window.
+  smallest_kkt_before_window_ = std::min(smallest_kkt_before_window_, before.kkt_error);
+  const double kkt_before = smallest_kkt_before_window_;
   const double decrease = before.objective - latest.objective;
   if (decrease >= sqp_.progress_min_decrease * std::max(std::abs(latest.objective), 1e-8) ||
       latest.constraint_violation < 0.5 * before.constraint_violation || kkt_in_window < 0.5 * kkt_before)
