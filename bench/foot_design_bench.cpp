@@ -6,6 +6,7 @@
 // per phase, and ends each block with the figures of the density's answer (the better of its two
 // fixed-foot designs, studies::better_design)
 //   rho R: saving vs start S %, vs point feet Q %, speeds N/21, wall T s
+// Each block is printed as soon as its density ends (a long list stopped early keeps what it found).
 //
 // usage: foot_design_bench [densities = 10] [starts = 20] [speeds = 0.3:0.1:2.3] [sweep_starts = 4]
 //   densities: comma-separated; speeds: FROM:STEP:TO (the design speed is the last)
@@ -13,6 +14,7 @@
 #include "cyclopt/studies/foot_design.hpp"
 #include "machine_info.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +62,45 @@ void print_parameters(const foot::FootSpec& f) {
     std::printf(" %s %.4g", std::string(layout[k].name).c_str(), f.parameters[static_cast<Eigen::Index>(k)]);
 }
 
+// One density's block, ending with the line of acceptance 2.
+void print_density(const studies::DensityDesign& d, int starts, std::size_t n) {
+  std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d)\n",
+              d.density, d.kkt_starts, starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
+              d.class_counts[3]);
+  for (std::size_t k = 0; k < d.runs.size(); ++k)
+    std::printf("  start %2zu: %-18s %5d iterations %6.1f s  f %.5f\n", k, nlp::to_string(d.runs[k].termination),
+                d.runs[k].iterations, d.runs[k].seconds, d.runs[k].objective);
+  for (std::size_t k = 0; k < d.optima.size(); ++k) {
+    const studies::DesignOptimum& m = d.optima[k];
+    std::printf("  optimum %zu: f %.5f, %s (%s)\n", k, m.objective, studies::to_string(m.classification.design_class),
+                m.classification.reason.c_str());
+  }
+  if (d.best >= 0) {
+    const studies::DesignOptimum& b = d.optima[static_cast<std::size_t>(d.best)];
+    std::printf("  design (optimum %d):", d.best);
+    print_parameters(b.foot);
+    std::printf("\n  m_F %.3f kg, r_F %.1f mm, J_F %.2e kg m^2, theta_F0 %.3f rad; active bounds (10.1):", b.mass,
+                1e3 * b.com_distance, b.inertia, b.zero_angle);
+    for (const std::string& a : b.active_bounds) std::printf(" [%s]", a.c_str());
+    std::printf("\n  free-foot continuation: %zu points, %s; f_mech per speed:", d.free_foot.points.size(), d.free_foot.message.c_str());
+    for (double f : d.free_foot_f_mech) std::printf(" %.4f", f);
+    std::printf("\n  low-speed design at %.2f m/s:", d.low_speed);
+    print_parameters(d.low_speed_foot);
+    std::printf("\n");
+    print_sweep(d.high);
+    print_sweep(d.low);
+    std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
+                100 * d.low_saving_vs_point);
+  }
+  std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s after it"
+              " (the design's %.1f s from the start of the continuation, the low-speed design's %.1f s)\n",
+              d.multistart_seconds, d.continuation_seconds, d.sweep_seconds, d.high.seconds, d.low.seconds);
+  std::printf("  answer: the %s (studies::better_design)\n", studies::to_string(d.answer));
+  std::printf("rho %.4g: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/%zu, wall %.1f s\n", d.density,
+              100 * d.answer_saving_vs_start(), 100 * d.answer_saving_vs_point(), d.answer_sweep().speeds_found, n,
+              d.seconds);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,6 +118,30 @@ int main(int argc, char** argv) {
   std::printf("foot_design_bench on %s\n", bench::machine_line().c_str());
   std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep\n",
               o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts);
+  // Each result is printed as soon as it is known, so a long list leaves every finished density.
+  const std::size_t n = o.sweep.speeds.size();
+  studies::FootSweepSummary start_foot, point_feet;
+  const auto started = std::chrono::steady_clock::now();
+  o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>&, const studies::FootSweepSummary& s) {
+    const bool point = part == studies::reference_part(studies::DesignReference::point_feet);
+    (point ? point_feet : start_foot) = s;
+    if (point) {  // the second and last reference
+      std::printf("references (%.1f s):\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+      print_sweep(start_foot);
+      print_sweep(point_feet);
+      std::fflush(stdout);
+    }
+    return true;
+  };
+  o.on_density = [&](const studies::DensityDesign& so_far, studies::DesignPhase finished) {
+    if (finished == studies::DesignPhase::low_sweep || (finished == studies::DesignPhase::multistart && so_far.best < 0)) {
+      studies::DensityDesign d = so_far;
+      studies::add_savings(d, o.sweep.speeds, start_foot, point_feet);
+      print_density(d, o.starts, n);
+      std::fflush(stdout);
+    }
+    return true;
+  };
   const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
   const walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
   studies::FootDesignResult r;
@@ -85,47 +150,6 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {  // options the study refuses, named by their field
     std::fprintf(stderr, "foot_design_bench: %s\n", e.what());
     return 2;
-  }
-  std::printf("references (%.1f s):\n", r.reference_seconds);
-  print_sweep(r.start_foot);
-  print_sweep(r.point_feet);
-  const std::size_t n = o.sweep.speeds.size();
-  for (const studies::DensityDesign& d : r.designs) {
-    std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d)\n",
-                d.density, d.kkt_starts, o.starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
-                d.class_counts[3]);
-    for (std::size_t k = 0; k < d.runs.size(); ++k)
-      std::printf("  start %2zu: %-18s %5d iterations %6.1f s  f %.5f\n", k, nlp::to_string(d.runs[k].termination),
-                  d.runs[k].iterations, d.runs[k].seconds, d.runs[k].objective);
-    for (std::size_t k = 0; k < d.optima.size(); ++k) {
-      const studies::DesignOptimum& m = d.optima[k];
-      std::printf("  optimum %zu: f %.5f, %s (%s)\n", k, m.objective, studies::to_string(m.classification.design_class),
-                  m.classification.reason.c_str());
-    }
-    if (d.best >= 0) {
-      const studies::DesignOptimum& b = d.optima[static_cast<std::size_t>(d.best)];
-      std::printf("  design (optimum %d):", d.best);
-      print_parameters(b.foot);
-      std::printf("\n  m_F %.3f kg, r_F %.1f mm, J_F %.2e kg m^2, theta_F0 %.3f rad; active bounds (10.1):", b.mass,
-                  1e3 * b.com_distance, b.inertia, b.zero_angle);
-      for (const std::string& a : b.active_bounds) std::printf(" [%s]", a.c_str());
-      std::printf("\n  free-foot continuation: %zu points, %s; f_mech per speed:", d.free_foot.points.size(), d.free_foot.message.c_str());
-      for (double f : d.free_foot_f_mech) std::printf(" %.4f", f);
-      std::printf("\n  low-speed design at %.2f m/s:", d.low_speed);
-      print_parameters(d.low_speed_foot);
-      std::printf("\n");
-      print_sweep(d.high);
-      print_sweep(d.low);
-      std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
-                  100 * d.low_saving_vs_point);
-    }
-    std::printf("  phases: design multistart %.1f s, free-foot continuation %.1f s, fixed-foot sweeps %.1f s after it"
-                " (the design's %.1f s from the start of the continuation, the low-speed design's %.1f s)\n",
-                d.multistart_seconds, d.continuation_seconds, d.sweep_seconds, d.high.seconds, d.low.seconds);
-    std::printf("  answer: the %s (studies::better_design)\n", studies::to_string(d.answer));
-    std::printf("rho %.4g: saving vs start %.1f %%, vs point feet %.1f %%, speeds %d/%zu, wall %.1f s\n", d.density,
-                100 * d.answer_saving_vs_start(), 100 * d.answer_saving_vs_point(), d.answer_sweep().speeds_found, n,
-                d.seconds);
   }
   std::printf("total %.1f s (references %.1f s)\n", r.seconds, r.reference_seconds);
 }
