@@ -11,9 +11,10 @@ namespace cyclopt::walker {
 // Ipopt): 50 costs ~n/50 = 0.6 Jacobians per iteration for the walker's n ~ 30.
 inline constexpr int kDistantStartHessianRefresh = 50;
 
-// SqpOptions::progress_window of the speed sweep's and the foot design's multistart solves (not in the seed): a solve
-// that makes no progress in f, feasibility or KKT error over this many iterations ends as stalled
-// instead of crawling to MaxIter. P2-shoes HMT, 20 perturbed starts (bench/results/speed_sweep_bench.txt):
+// SqpOptions::progress_window of the multistart solves of the speed sweep and of the foot design
+// (not in the seed; the design's figures at foot_design.cpp): a solve that makes no progress in f,
+// feasibility or KKT error over this many iterations ends as stalled instead of crawling to
+// MaxIter. P2-shoes HMT, 20 perturbed starts (bench/results/speed_sweep_bench.txt):
 // 0.3 m/s 0/20 KKT either way, 7994 instead of 28567 iterations; 1.3 m/s the same best optimum,
 // 19/20 KKT (one run that converged after 1075 iterations to the 4th best optimum stalls at 885);
 // the whole 21-speed sweep 512 instead of 1056 s with a 10 % lower mean f_mech.
