@@ -4,8 +4,8 @@
 // and constraints from forward-mode automatic differentiation. Directions along x alone keep the
 // model double, so every grid point is differentiated locally in double and chained
 // (grid_point.hpp); for the default Bezier degree (20 or 30 gait parameters) one pass with
-// ad::Dual<n_x> carries every direction, otherwise, and with free model parameters (whose chunks
-// cast the model to Dual), chunks of ad::Dual<kJacobianChunk> directions.
+// ad::Dual<n_x padded to 24 or 32> carries every direction, otherwise, and with free model
+// parameters (whose chunks cast the model to Dual), chunks of ad::Dual<kJacobianChunk> directions.
 
 #include "cyclopt/walker/model_parameters.hpp"
 #include "cyclopt/walker/periodic_gait.hpp"
