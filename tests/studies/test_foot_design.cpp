@@ -282,3 +282,32 @@ TEST(FootDesign, ItsTwoThreadsCallTheCallerOneAtATimeAndNeverAfterItReturned) {
   EXPECT_EQ(stopped_watch.late.load(), 0) << "the design's sweep called back after the study returned";
   std::printf("first study %d callbacks; the stopped one returned after %.2f s\n", watch.calls.load(), seconds);
 }
+
+TEST(FootDesign, SweepsTheDesignOnceWhereTheFreeFootCurveReachesNoLowerSpeed) {
+  // Design speed at the bottom of the grid: step 2 has no lower speed, so the low-speed design is
+  // the design, and its sweep is the design's, not a second identical one.
+  FootDesignOptions o = runnable();
+  o.design_speed = 2.2;
+  o.sweep.seed_speeds = {2.2};
+  CallbackWatch watch;
+  MemoryJournals journals;
+  std::vector<DesignPhase> phases;
+  watch_callbacks(o, watch, journals, phases);
+  const DensityDesign d = design_density(10, p2(), {}, o);
+  ASSERT_GE(d.best, 0) << "the small study found no admissible design";
+  EXPECT_DOUBLE_EQ(d.low_speed, 2.2);
+  EXPECT_GT(d.high.speeds_found, 0);
+  EXPECT_EQ(d.low.speeds_found, d.high.speeds_found);
+  for (std::size_t i = 0; i < d.high.f_mech.size(); ++i) {
+    if (std::isfinite(d.high.f_mech[i])) {
+      EXPECT_EQ(d.low.f_mech[i], d.high.f_mech[i]) << "speed " << i;
+    }
+  }
+  EXPECT_EQ(d.low.name, "rho 10 low-speed design");
+  EXPECT_EQ(d.low.seconds, 0.0);
+  EXPECT_TRUE(std::count(journals.parts.begin(), journals.parts.end(), "rho 10/high"));
+  EXPECT_FALSE(std::count(journals.parts.begin(), journals.parts.end(), "rho 10/low")) << "the same foot was swept twice";
+  EXPECT_EQ(phases, (std::vector<DesignPhase>{DesignPhase::multistart, DesignPhase::free_foot, DesignPhase::high_sweep,
+                                              DesignPhase::low_sweep}));
+  EXPECT_EQ(better_design(d.high, d.low), DesignAnswer::design);
+}

@@ -16,7 +16,8 @@
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
 //      grid speed reached (Fig. 10.2a green and blue), each started from that foot's optimal gait
 //      (SpeedSweepOptions::known_gaits) before its seed multistarts. The design's sweep needs only
-//      step 1, so it runs on a thread of its own beside step 2 and the low-speed sweep.
+//      step 1, so it runs on a thread of its own beside step 2 and the low-speed sweep. Where step 2
+//      reached no speed below the design speed, the low-speed design is the design: one sweep.
 // The references, swept once with the same options: the start foot with its own masses (Table
 // 5.1) and point feet (Table D.1). Savings are those of foot_comparison.hpp: 1 - mean f_mech of
 // the design / mean f_mech of the reference, over the grid speeds both reach.
