@@ -45,12 +45,17 @@ std::vector<double> grid(const std::string& text) {
   return out;
 }
 
+// Its speeds and mean f_mech, and how many of its points are only "acceptable" (a step below
+// TolStep, no KKT test passed): acceptance 2 asks for a KKT point at every speed.
 void print_sweep(const studies::FootSweepSummary& s) {
   double sum = 0.0;
   for (double f : s.f_mech)
     if (std::isfinite(f)) sum += f;
-  std::printf("  %-28s speeds %2d/%zu, mean f_mech %.5f over them, %.1f s:", s.name.c_str(), s.speeds_found, s.f_mech.size(),
-              s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
+  int acceptable = 0;
+  for (const studies::BestPoint& b : s.best)
+    if (b.found && b.point.corrector.termination == nlp::Termination::acceptable) ++acceptable;
+  std::printf("  %-28s speeds %2d/%zu (%d only acceptable), mean f_mech %.5f over them, %.1f s:", s.name.c_str(),
+              s.speeds_found, s.f_mech.size(), acceptable, s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
   for (double f : s.f_mech) std::printf(" %.4f", f);
   std::printf("\n");
 }

@@ -95,6 +95,36 @@ TEST(Multistart, RestartsTakeARunThatStoppedEarlyToItsKktPoint) {
   EXPECT_THROW(multistart_from(factory, start, o), std::invalid_argument);
 }
 
+TEST(Multistart, KktOnlyRestartsAcceptableRunsAndLeavesOutThoseThatStayAcceptable) {
+  // A TolStep far above the steps makes each SQP solve stop at its first step as "acceptable"
+  // (Algorithm 1 step 3) without moving: a potential KKT point that is none.
+  MultistartOptions o;
+  o.num_threads = 1;
+  o.solver.solver = SolverKind::sqp;
+  o.solver.sqp.step_tolerance = 100.0;
+  o.restarts = 2;
+  const auto factory = [] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(); };
+  const std::vector<Eigen::VectorXd> starts{Eigen::Vector2d(2.0, -2.0), Eigen::Vector2d(-0.5, 0.5)};
+  const MultistartResult loose = multistart_from(factory, starts, o);
+  ASSERT_EQ(loose.runs[0].termination, Termination::acceptable) << loose.runs[0].message;
+  EXPECT_EQ(loose.successes, 2);
+  EXPECT_EQ(loose.runs[0].message.find("restart"), std::string::npos) << "an accepted run was restarted";
+  o.acceptance = Acceptance::kkt_only;
+  const MultistartResult strict = multistart_from(factory, starts, o);
+  EXPECT_EQ(strict.successes, 0);
+  EXPECT_TRUE(strict.optima.empty());
+  EXPECT_TRUE(strict.ranking.empty());
+  EXPECT_NE(strict.runs[0].message.find("restart 2"), std::string::npos) << strict.runs[0].message;
+  // Recorded runs (a resumed multistart) are judged alike: a converged one counts, an acceptable one not.
+  SolverSummary kkt = loose.runs[1];
+  kkt.termination = Termination::converged;
+  o.recorded_run = [&](int i) { return i == 0 ? loose.runs[0] : kkt; };
+  const MultistartResult replayed = multistart_from(factory, starts, o);
+  EXPECT_EQ(replayed.successes, 1);
+  ASSERT_EQ(replayed.optima.size(), 1u);
+  EXPECT_EQ(replayed.optima[0].starts, std::vector<int>{1});
+}
+
 TEST(Multistart, RejectsBadOptions) {
   MultistartOptions o;
   o.num_starts = 0;

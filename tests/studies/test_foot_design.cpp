@@ -250,6 +250,11 @@ TEST(FootDesign, ItsTwoThreadsCallTheCallerOneAtATimeAndNeverAfterItReturned) {
   const DensityDesign d = design_density(10, p2(), {}, o);
   watch.closed = true;
   ASSERT_GE(d.best, 0) << "the small study found no admissible design";
+  for (const DesignOptimum& m : d.optima)  // designs are KKT points, not "acceptable" potential ones
+    EXPECT_EQ(m.summary.termination, nlp::Termination::converged) << m.summary.message;
+  EXPECT_EQ(d.kkt_starts, static_cast<int>(std::count_if(d.runs.begin(), d.runs.end(), [](const DesignRun& r) {
+              return r.termination == nlp::Termination::converged;
+            })));
   EXPECT_FALSE(d.stopped);
   EXPECT_GT(d.high.speeds_found, 0);
   EXPECT_GT(d.low.speeds_found, 0);

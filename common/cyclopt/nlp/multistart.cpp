@@ -80,12 +80,14 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
           continue;
         }
         std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt;
-        run = recorded ? std::move(*recorded) : solve_with_restarts(*problem, options.solver, result.starts[static_cast<size_t>(i)], options.restarts);
+        run = recorded ? std::move(*recorded)
+                       : solve_with_restarts(*problem, options.solver, result.starts[static_cast<size_t>(i)],
+                                             options.restarts, options.acceptance);
         if (run.termination == Termination::user_stop) continue;
         const std::lock_guard<std::mutex> lock(finished_mutex);
         if (options.on_run_finished && !recorded) options.on_run_finished(i, run);
         ++runs_done;
-        if (run.success() && !(run.objective >= best_objective)) best_objective = run.objective;
+        if (accepted(run, options.acceptance) && !(run.objective >= best_objective)) best_objective = run.objective;
         if (options.on_progress) options.on_progress(runs_done, best_objective);
       }
     } catch (...) {
@@ -100,7 +102,7 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
   if (failure) std::rethrow_exception(failure);
 
   for (int i = 0; i < n; ++i)
-    if (result.runs[static_cast<size_t>(i)].success()) result.ranking.push_back(i);
+    if (accepted(result.runs[static_cast<size_t>(i)], options.acceptance)) result.ranking.push_back(i);
   result.successes = static_cast<int>(result.ranking.size());
   std::stable_sort(result.ranking.begin(), result.ranking.end(), [&](int a, int b) {
     return result.runs[static_cast<size_t>(a)].objective < result.runs[static_cast<size_t>(b)].objective;

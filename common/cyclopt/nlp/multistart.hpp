@@ -34,6 +34,9 @@ struct MultistartOptions {
   // A run that ends without a KKT point (and not stopped) is solved again from its final point, at
   // most `restarts` times (solve_with_restarts, solve.hpp). >= 0.
   int restarts = 0;
+  // The runs that count as successful (ranking, optima, successes, on_progress's best) and that are
+  // not restarted: with kkt_only an "acceptable" run is restarted and, if it stays one, left out.
+  Acceptance acceptance = Acceptance::kkt_or_acceptable;
   // Resume (issue 19 item 5): a run that recorded_run(i) returns is taken as run i instead of
   // being solved (its x is the final point); every run solved here to the end (not stopped by
   // should_stop) is passed to on_run_finished(i, run), one call at a time, from worker threads.
@@ -45,7 +48,7 @@ struct MultistartOptions {
   std::function<void(int runs_done, double best_objective)> on_progress;
 };
 
-// One distinct local optimum found by the successful runs.
+// One distinct local optimum found by the successful runs (MultistartOptions::acceptance).
 struct MultistartOptimum {
   double objective = 0.0;
   Eigen::VectorXd x;       // of the best run that reached it
@@ -57,7 +60,7 @@ struct MultistartResult {
   std::vector<SolverSummary> runs;          // summary of run i
   std::vector<int> ranking;                 // successful runs by objective, best first (ties: lower index)
   std::vector<MultistartOptimum> optima;    // distinct optima, best first
-  int successes = 0;                        // runs with SolverSummary::success()
+  int successes = 0;                        // successful runs (MultistartOptions::acceptance)
   double wall_seconds = 0.0;
 };
 

@@ -17,10 +17,11 @@ SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen:
   throw std::invalid_argument("SolverOptions.solver: must be ipopt or sqp");
 }
 
-SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts) {
+SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts,
+                                  Acceptance acceptance) {
   if (restarts < 0) throw std::invalid_argument("restarts: must be >= 0");
   SolverSummary run = solve(problem, options, x0);
-  for (int k = 1; k <= restarts && !run.success() && run.termination != Termination::user_stop && run.x.size() > 0 &&
+  for (int k = 1; k <= restarts && !accepted(run, acceptance) && run.termination != Termination::user_stop && run.x.size() > 0 &&
                   run.x.allFinite();
        ++k) {
     SolverSummary again = solve(problem, options, run.x);

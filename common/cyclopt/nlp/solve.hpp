@@ -11,11 +11,13 @@ namespace cyclopt::nlp {
 // Throws std::invalid_argument for invalid options (naming the field) or a wrongly sized x0.
 SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0);
 
-// solve(), then, while the result is no KKT point (and not stopped), up to `restarts` fresh solves
+// solve(), then, while the result is not accepted (and not stopped), up to `restarts` fresh solves
 // from the last final point: a fresh solve starts with a fresh Hessian approximation, which takes
-// solves that stalled near an optimum (MaxFun, no merit decrease) the rest of the way. The summary
-// is the last solve's, with the iterations, evaluations and seconds of all of them and the
-// earlier stops named in its message. Throws as solve(), and std::invalid_argument for restarts < 0.
-SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts);
+// solves that stalled near an optimum (MaxFun, no merit decrease, with kkt_only a step below
+// TolStep) the rest of the way. The summary is the last solve's, with the iterations, evaluations
+// and seconds of all of them and the earlier stops named in its message. Throws as solve(), and
+// std::invalid_argument for restarts < 0.
+SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts,
+                                  Acceptance acceptance = Acceptance::kkt_or_acceptable);
 
 }  // namespace cyclopt::nlp

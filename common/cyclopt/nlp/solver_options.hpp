@@ -88,4 +88,13 @@ struct SolverSummary {
   bool success() const { return termination == Termination::converged || termination == Termination::acceptable; }
 };
 
+// Which runs a caller takes as solved. "acceptable" is the SQP's stop at a step below TolStep while
+// feasible (Algorithm 1 step 3: a *potential* KKT point) or Ipopt's acceptable level; kkt_only
+// takes converged runs alone (a design the study builds on: rho 30 and 50 of
+// bench/results/foot_design_bench.txt chose "acceptable" designs that no continuation could follow).
+enum class Acceptance { kkt_or_acceptable, kkt_only };
+inline bool accepted(const SolverSummary& run, Acceptance a) {
+  return a == Acceptance::kkt_only ? run.termination == Termination::converged : run.success();
+}
+
 }  // namespace cyclopt::nlp
