@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -45,17 +46,29 @@ std::vector<double> grid(const std::string& text) {
   return out;
 }
 
-// Its speeds and mean f_mech, and how many of its points are only "acceptable" (a step below
-// TolStep, no KKT test passed): acceptance 2 asks for a KKT point at every speed.
-void print_sweep(const studies::FootSweepSummary& s) {
+// Its speeds and mean f_mech, how many of its points are only "acceptable" (a step below TolStep,
+// no KKT test passed: acceptance 2 asks for a KKT point at every speed), and at which speeds the
+// point is under-resolved (f_mech on the 4x finer grid more than 10 % away, design_class.hpp).
+void print_sweep(const studies::FootSweepSummary& s, const walker::WalkerModel<double>& model) {
   double sum = 0.0;
   for (double f : s.f_mech)
     if (std::isfinite(f)) sum += f;
   int acceptable = 0;
-  for (const studies::BestPoint& b : s.best)
-    if (b.found && b.point.corrector.termination == nlp::Termination::acceptable) ++acceptable;
-  std::printf("  %-28s speeds %2d/%zu (%d only acceptable), mean f_mech %.5f over them, %.1f s:", s.name.c_str(),
-              s.speeds_found, s.f_mech.size(), acceptable, s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
+  std::string under_resolved;
+  for (const studies::BestPoint& b : s.best) {
+    if (!b.found) continue;
+    if (b.point.corrector.termination == nlp::Termination::acceptable) ++acceptable;
+    const walker::GaitProblem at(model, {walker::Objective::mechanical, b.speed, walker::Quadrature::trapezoid, {}});
+    const double fine = at.refined_objective(b.point.x, studies::kResolutionFactor);
+    if (!(std::abs(fine - b.point.objective) <= studies::kResolutionTolerance * std::abs(fine))) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, " %.2g (%.4f -> %.4f)", b.speed, b.point.objective, fine);
+      under_resolved += buf;
+    }
+  }
+  std::printf("  %-28s speeds %2d/%zu (%d only acceptable; under-resolved:%s), mean f_mech %.5f over them, %.1f s:",
+              s.name.c_str(), s.speeds_found, s.f_mech.size(), acceptable, under_resolved.empty() ? " none" : under_resolved.c_str(),
+              s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
   for (double f : s.f_mech) std::printf(" %.4f", f);
   std::printf("\n");
 }
@@ -68,10 +81,11 @@ void print_parameters(const foot::FootSpec& f) {
 }
 
 // One density's block, ending with the line of acceptance 2.
-void print_density(const studies::DensityDesign& d, int starts, std::size_t n) {
-  std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d)\n",
+void print_density(const studies::DensityDesign& d, int starts, std::size_t n, const walker::WalkingConstants& constants) {
+  std::printf("rho %.4g kg/m^2: %d/%d design starts KKT, %zu distinct optima (admissible %d, stilt %d, wheel %d, no rolling %d, "
+              "under-resolved %d)\n",
               d.density, d.kkt_starts, starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
-              d.class_counts[3]);
+              d.class_counts[3], d.class_counts[4]);
   for (std::size_t k = 0; k < d.runs.size(); ++k)
     std::printf("  start %2zu: %-18s %5d iterations %6.1f s  f %.5f\n", k, nlp::to_string(d.runs[k].termination),
                 d.runs[k].iterations, d.runs[k].seconds, d.runs[k].objective);
@@ -92,8 +106,8 @@ void print_density(const studies::DensityDesign& d, int starts, std::size_t n) {
     std::printf("\n  low-speed design at %.2f m/s:", d.low_speed);
     print_parameters(d.low_speed_foot);
     std::printf("\n");
-    print_sweep(d.high);
-    print_sweep(d.low);
+    print_sweep(d.high, walker::make_walker_model(b.foot, constants));
+    print_sweep(d.low, walker::make_walker_model(d.low_speed_foot, constants));
     std::printf("  low-speed design: saving vs start %.1f %%, vs point feet %.1f %%\n", 100 * d.low_saving_vs_start,
                 100 * d.low_saving_vs_point);
   }
@@ -126,14 +140,16 @@ int main(int argc, char** argv) {
   // Each result is printed as soon as it is known, so a long list leaves every finished density.
   const std::size_t n = o.sweep.speeds.size();
   studies::FootSweepSummary start_foot, point_feet;
+  std::optional<walker::WalkerModel<double>> start_model;
   const auto started = std::chrono::steady_clock::now();
-  o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>&, const studies::FootSweepSummary& s) {
+  o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
     const bool point = part == studies::reference_part(studies::DesignReference::point_feet);
     (point ? point_feet : start_foot) = s;
+    if (!point) start_model = model;
     if (point) {  // the second and last reference
       std::printf("references (%.1f s):\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-      print_sweep(start_foot);
-      print_sweep(point_feet);
+      print_sweep(start_foot, *start_model);
+      print_sweep(point_feet, model);
       std::fflush(stdout);
     }
     return true;
@@ -142,7 +158,7 @@ int main(int argc, char** argv) {
     if (finished == studies::DesignPhase::low_sweep || (finished == studies::DesignPhase::multistart && so_far.best < 0)) {
       studies::DensityDesign d = so_far;
       studies::add_savings(d, o.sweep.speeds, start_foot, point_feet);
-      print_density(d, o.starts, n);
+      print_density(d, o.starts, n, o.constants);
       std::fflush(stdout);
     }
     return true;

@@ -51,8 +51,9 @@ std::optional<nlohmann::ordered_json> design_summary(const nlohmann::json& row, 
   }
   nlohmann::ordered_json s;
   s["rho_kg_m2"] = number(d.density);
-  s["optima_a/s/w/n"] = std::to_string(d.admissible_optima) + "/" + std::to_string(d.stilt_optima) + "/" +
-                        std::to_string(d.wheel_optima) + "/" + std::to_string(d.no_rolling_optima);
+  s["optima_a/s/w/n/u"] = std::to_string(d.admissible_optima) + "/" + std::to_string(d.stilt_optima) + "/" +
+                          std::to_string(d.wheel_optima) + "/" + std::to_string(d.no_rolling_optima) + "/" +
+                          std::to_string(d.under_resolved_optima);
   for (const auto& [name, value] : d.design.parameters) s[name] = number(value);
   s["m_F_kg"] = number(d.design.m_F);
   std::string bounds;

@@ -23,6 +23,7 @@ TEST(PointTable, AFootDesignDensityIsOneLine) {
   d.kkt_starts = 5;
   d.admissible_optima = 2;
   d.stilt_optima = 1;
+  d.under_resolved_optima = 1;
   d.best = 0;
   d.design = {{{"h_F", 0.1}, {"l_HM", 0.4}}, 0.236, 0.103, 1.98e-3, 2.354};
   d.active_bounds = {"l_HM_max - l_HM >= 0", "h_F_max - h_F >= 0"};
@@ -39,7 +40,7 @@ TEST(PointTable, AFootDesignDensityIsOneLine) {
   const nlohmann::json row = {{"curve", 0}, {"point", 0}, {"parameter", 10.0}, {"status", "ok"}, {"values", d}};
   const auto s = point_summary(row);
   ASSERT_TRUE(s);
-  EXPECT_EQ((*s)["optima_a/s/w/n"], "2/1/0/0");
+  EXPECT_EQ((*s)["optima_a/s/w/n/u"], "2/1/0/0/1");
   EXPECT_EQ((*s)["active_bounds"], "l_HM_max, h_F_max");
   EXPECT_EQ((*s)["speeds"], "20/21");
   EXPECT_EQ((*s)["low_speeds"], "21/21");

@@ -247,6 +247,7 @@ TEST(ResultRecords, FootDesignRecordsRoundTrip) {
   d.stilt_optima = 1;
   d.wheel_optima = 1;
   d.no_rolling_optima = 0;
+  d.under_resolved_optima = 3;
   d.best = 1;
   d.design_objective = 0.0343;
   d.design = designed_foot(0.1);
@@ -281,6 +282,8 @@ TEST(ResultRecords, FootDesignRecordsRoundTrip) {
   nlohmann::json older = d;  // stored before the answer existed: the design was the only one
   older.erase("answer");
   EXPECT_EQ(older.get<DesignedFootRecord>().answer, "design");
+  older["optima"].erase("under_resolved");  // stored before the class existed
+  EXPECT_EQ(older.get<DesignedFootRecord>().under_resolved_optima, 0);
   nlohmann::json unknown = d;
   unknown["answer"] = "wheel";
   EXPECT_EQ(error_of<DesignedFootRecord>(unknown), "values.answer: must be \"design\" or \"low-speed design\", got \"wheel\"");

@@ -185,7 +185,8 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   EXPECT_EQ(designs, 1);
   EXPECT_EQ(admissible, design.admissible_optima);
   EXPECT_EQ(static_cast<int>(optima.size()),
-            design.admissible_optima + design.stilt_optima + design.wheel_optima + design.no_rolling_optima);
+            design.admissible_optima + design.stilt_optima + design.wheel_optima + design.no_rolling_optima +
+                design.under_resolved_optima);
   EXPECT_LE(design.design.parameters.at("h_F"), 0.1 + 1e-9);  // h_F,max of (10.1)
   EXPECT_GT(design.design.m_F, 0.0);
   // The free-foot continuation starts at the design.

@@ -18,7 +18,7 @@ std::string joined(const std::vector<std::string>& items) {
 
 ReportTable outcome_table(const FootDesignCurves& c) {
   ReportTable t;
-  t.header = {"rho (kg/m^2)", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling",
+  t.header = {"rho (kg/m^2)", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling / under-resolved",
               "f at design speed", "answer", "speeds reached", "mean f_mech", "saving vs start foot",
               "saving vs point feet", "wall (s)"};
   for (const DesignedDensity& d : c.densities) {
@@ -29,7 +29,8 @@ ReportTable outcome_table(const FootDesignCurves& c) {
                                    : "no admissible design: " + r.reason.value_or("-"),
                       std::to_string(r.kkt_starts) + " / " + std::to_string(r.starts),
                       std::to_string(r.admissible_optima) + " / " + std::to_string(r.stilt_optima) + " / " +
-                          std::to_string(r.wheel_optima) + " / " + std::to_string(r.no_rolling_optima),
+                          std::to_string(r.wheel_optima) + " / " + std::to_string(r.no_rolling_optima) + " / " +
+                          std::to_string(r.under_resolved_optima),
                       report_number(r.design_objective, "%.5f"), r.admissible ? r.answer : "-",
                       std::to_string(low ? r.low_speeds_reached : r.speeds_reached) + " / " + std::to_string(r.speeds),
                       report_number(low ? r.low_mean_f_mech : r.mean_f_mech, "%.5f"),

@@ -68,7 +68,8 @@ void to_json(nlohmann::json& j, const DesignedFootRecord& d) {
        {"optima", {{"admissible", d.admissible_optima},
                    {"stilt", d.stilt_optima},
                    {"wheel", d.wheel_optima},
-                   {"no_rolling", d.no_rolling_optima}}},
+                   {"no_rolling", d.no_rolling_optima},
+                   {"under_resolved", d.under_resolved_optima}}},
        {"best", d.best},
        {"design_objective", finite_or_null(d.design_objective)},
        {"design", d.design},
@@ -107,6 +108,7 @@ void from_json(const nlohmann::json& j, DesignedFootRecord& d) {
   d.stilt_optima = integer(optima, r + ".optima", "stilt");
   d.wheel_optima = integer(optima, r + ".optima", "wheel");
   d.no_rolling_optima = integer(optima, r + ".optima", "no_rolling");
+  d.under_resolved_optima = optima.contains("under_resolved") ? integer(optima, r + ".optima", "under_resolved") : 0;
   d.best = integer(j, r, "best");
   d.design_objective = number(j, r, "design_objective");
   d.design = member(j, r, "design").get<DesignedFoot>();

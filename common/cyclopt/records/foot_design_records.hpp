@@ -53,6 +53,7 @@ struct DesignedFootRecord {
   std::optional<std::string> reason;
   int starts = 0, kkt_starts = 0;      // design multistart runs, runs that reached a KKT point
   int admissible_optima = 0, stilt_optima = 0, wheel_optima = 0, no_rolling_optima = 0;
+  int under_resolved_optima = 0;       // (records stored before the class existed read as 0)
   int best = -1;                       // point index of the design on its multistart curve
   double design_objective = kUnset;    // at the design speed
   DesignedFoot design;                 // the foot optimal at the design speed (when admissible)

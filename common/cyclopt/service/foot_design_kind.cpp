@@ -240,6 +240,7 @@ records::DesignedFootRecord DesignUnit::design_record(const studies::DensityDesi
   r.stilt_optima = d.class_counts[static_cast<int>(studies::DesignClass::stilt)];
   r.wheel_optima = d.class_counts[static_cast<int>(studies::DesignClass::wheel)];
   r.no_rolling_optima = d.class_counts[static_cast<int>(studies::DesignClass::no_rolling)];
+  r.under_resolved_optima = d.class_counts[static_cast<int>(studies::DesignClass::under_resolved)];
   r.best = d.best;
   r.speeds = static_cast<int>(job_.walker.speeds.size());
   r.multistart_seconds = d.multistart_seconds;
@@ -251,8 +252,8 @@ records::DesignedFootRecord DesignUnit::design_record(const studies::DensityDesi
                    ? "no design multistart run reached a KKT point (" + std::to_string(r.starts) + " starts)"
                    : "every optimum of the design multistart is degenerate: " + std::to_string(r.stilt_optima) +
                          " stilt, " + std::to_string(r.wheel_optima) + " wheel, " + std::to_string(r.no_rolling_optima) +
-                         " no rolling (design_class.hpp; " + std::to_string(r.kkt_starts) + " of " +
-                         std::to_string(r.starts) + " starts reached a KKT point)";
+                         " no rolling, " + std::to_string(r.under_resolved_optima) + " under-resolved (design_class.hpp; " +
+                         std::to_string(r.kkt_starts) + " of " + std::to_string(r.starts) + " starts reached a KKT point)";
     return r;
   }
   const studies::DesignOptimum& best = d.optima[static_cast<std::size_t>(d.best)];

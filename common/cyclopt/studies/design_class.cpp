@@ -4,6 +4,7 @@
 #include "cyclopt/foot/rolling_kinematics.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -26,12 +27,26 @@ const char* to_string(DesignClass c) {
     case DesignClass::stilt: return "stilt";
     case DesignClass::wheel: return "wheel";
     case DesignClass::no_rolling: return "no rolling";
+    case DesignClass::under_resolved: return "under-resolved";
   }
   return "?";
 }
 
-DesignClassification classify_design(const walker::WalkerModel<double>& model, const walker::PeriodicGait<double>& gait) {
+DesignClassification classify_design(const walker::WalkerModel<double>& model, const walker::PeriodicGait<double>& gait,
+                                     double refined_objective, double resolution_tolerance) {
   DesignClassification c;
+  c.objective = gait.objective;
+  c.refined_objective = refined_objective;
+  if (!(std::abs(refined_objective - gait.objective) <= resolution_tolerance * std::abs(refined_objective))) {
+    c.design_class = DesignClass::under_resolved;
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "under-resolved: objective %.3g on the grid, %.3g on a grid %d times finer (more than %.3g %% apart "
+                  "or no gait there: the optimum exploits the quadrature)",
+                  gait.objective, refined_objective, kResolutionFactor, 100.0 * resolution_tolerance);
+    c.reason = buf;
+    return c;
+  }
   if (!model.has_feet()) return c;
   const walker::GaitTrajectory<double>& tr = gait.trajectory;
   const Eigen::Index n = tr.stance_foot_angle.size();

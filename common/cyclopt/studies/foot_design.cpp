@@ -240,7 +240,8 @@ DesignOptimum DesignStudy::optimum(const walker::GaitProblem& shape, double rho,
     if (margin(i) <= 1e-6) d.active_bounds.push_back(rows.names[static_cast<std::size_t>(i)]);
   const walker::PeriodicGait<double> gait = shape.gait_at(m.x);
   if (gait.real)
-    d.classification = classify_design(designed, gait);
+    d.classification = classify_design(designed, gait, shape.refined_objective(m.x, kResolutionFactor),
+                                       o_.resolution_tolerance);
   else
     d.classification = {DesignClass::stilt, "the gait has no real periodic solution at the optimum: " + gait.failure};
   return d;
@@ -507,6 +508,7 @@ std::vector<std::string> design_free_parameters(const foot::FootSpec& start, con
     if (!(rho > 0.0) || !std::isfinite(rho)) throw std::invalid_argument("densities: each must be > 0 kg/m^2");
   if (o.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (!(o.foot_scale >= 0.0 && o.foot_scale <= 3.0)) throw std::invalid_argument("foot_scale: must be in [0, 3]");
+  if (!(o.resolution_tolerance > 0.0)) throw std::invalid_argument("resolution_tolerance: must be > 0");
   if (std::none_of(o.sweep.speeds.begin(), o.sweep.speeds.end(), [&](double v) { return std::abs(v - o.design_speed) <= 1e-12; }))
     throw std::invalid_argument("design_speed: must be one of the speeds");
   std::vector<std::string> free = o.free_parameters;

@@ -59,6 +59,9 @@ struct FootDesignOptions {
   foot::DesignBounds bounds;            // (10.1)
   // Foot parameters optimised; empty: default_design_parameters (below).
   std::vector<std::string> free_parameters;
+  // An optimum whose objective moves by more than this (relative) on a grid kResolutionFactor
+  // times finer is under-resolved, no design (design_class.hpp). > 0.
+  double resolution_tolerance = kResolutionTolerance;
   double objective_tolerance = 1e-5;    // distinct design optima (multistart.hpp)
   double x_tolerance = 1e-2;
   bool references = true;               // sweep the start foot and point feet (else savings are NaN)
@@ -121,7 +124,7 @@ struct DensityDesign {
   std::vector<DesignRun> runs;            // every design multistart run, in start order
   std::vector<DesignOptimum> optima;      // best first
   int best = -1;                          // index of the best admissible optimum, -1 if none
-  int class_counts[4] = {0, 0, 0, 0};     // optima per DesignClass
+  int class_counts[5] = {0, 0, 0, 0, 0};  // optima per DesignClass
   ContinuationResult free_foot;           // step 2 (empty without a design)
   // Step 2's problem: the design's foot (free_foot's x holds its free parameters; those with a
   // sharp corner, k <= 1e-6, stay fixed at the design's values) over the speed.

@@ -95,6 +95,14 @@ PeriodicGait<double> GaitProblem::gait_at(const Eigen::VectorXd& z) const {
   return GaitEvaluator(model_at(z)).evaluate(x, gait_options(true));
 }
 
+double GaitProblem::refined_objective(const Eigen::VectorXd& z, int factor) const {
+  if (factor < 1) throw std::invalid_argument("factor: must be >= 1, got " + std::to_string(factor));
+  WalkerModel<double> fine = model_at(z);
+  fine.constants.points = (fine.constants.points - 1) * factor + 1;
+  const PeriodicGait<double> g = GaitEvaluator(fine).evaluate(gait_parameters(z), gait_options(false));
+  return g.real ? g.objective : std::numeric_limits<double>::quiet_NaN();
+}
+
 nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out) {
   if (z.size() != num_variables())
     throw std::invalid_argument("z: " + std::to_string(z.size()) + " entries, expected " + std::to_string(num_variables()));

@@ -51,6 +51,10 @@ class GaitProblem : public nlp::Problem {
   WalkerModel<double> model_at(const Eigen::VectorXd& z) const;
   // The full gait (with trajectories) at z.
   PeriodicGait<double> gait_at(const Eigen::VectorXd& z) const;
+  // The objective at z on a grid `factor` (>= 1) times finer in theta than the model's P (5.93),
+  // which keeps every point of the P grid; NaN where z has no real gait there. An optimum whose
+  // objective moves much under refinement exploits the quadrature (studies/design_class.hpp).
+  double refined_objective(const Eigen::VectorXd& z, int factor) const;
   const GaitProblemOptions& options() const { return options_; }
 
  private:
