@@ -60,7 +60,7 @@ void print_sweep(const studies::FootSweepSummary& s, const walker::WalkerModel<d
     if (b.point.corrector.termination == nlp::Termination::acceptable) ++acceptable;
     const walker::GaitProblem at(model, {walker::Objective::mechanical, b.speed, walker::Quadrature::trapezoid, {}});
     const double fine = at.refined_objective(b.point.x, studies::kResolutionFactor);
-    if (!(std::abs(fine - b.point.objective) <= studies::kResolutionTolerance * std::abs(fine))) {
+    if (!studies::resolved(b.point.objective, fine)) {
       char buf[64];
       std::snprintf(buf, sizeof buf, " %.2g (%.4f -> %.4f)", b.speed, b.point.objective, fine);
       under_resolved += buf;
@@ -145,8 +145,9 @@ int main(int argc, char** argv) {
   o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
     const bool point = part == studies::reference_part(studies::DesignReference::point_feet);
     (point ? point_feet : start_foot) = s;
-    if (!point) start_model = model;
-    if (point) {  // the second and last reference
+    if (!point) {
+      start_model = model;
+    } else {  // the second and last reference
       std::printf("references (%.1f s):\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
       print_sweep(start_foot, *start_model);
       print_sweep(point_feet, model);

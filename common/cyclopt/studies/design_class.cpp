@@ -32,12 +32,16 @@ const char* to_string(DesignClass c) {
   return "?";
 }
 
+bool resolved(double objective, double refined_objective, double tolerance) {
+  return std::abs(refined_objective - objective) <= tolerance * std::abs(refined_objective);
+}
+
 DesignClassification classify_design(const walker::WalkerModel<double>& model, const walker::PeriodicGait<double>& gait,
                                      double refined_objective, double resolution_tolerance) {
   DesignClassification c;
   c.objective = gait.objective;
   c.refined_objective = refined_objective;
-  if (!(std::abs(refined_objective - gait.objective) <= resolution_tolerance * std::abs(refined_objective))) {
+  if (!resolved(gait.objective, refined_objective, resolution_tolerance)) {
     c.design_class = DesignClass::under_resolved;
     char buf[200];
     std::snprintf(buf, sizeof buf,

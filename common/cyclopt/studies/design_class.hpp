@@ -61,6 +61,10 @@ struct DesignClassification {
   double sole_length = 0.0;          // m
 };
 
+// The resolution rule alone: the objective on the finer grid lies within `tolerance` (relative)
+// of the objective on the grid (false where the finer grid has no gait: refined_objective NaN).
+bool resolved(double objective, double refined_objective, double tolerance = kResolutionTolerance);
+
 // `gait` must carry its trajectory (GaitOptions::trajectories); `model` is the model the gait was
 // computed for (the designed foot); refined_objective: the gait's objective on the finer grid
 // (walker::GaitProblem::refined_objective with kResolutionFactor), compared within

@@ -7,8 +7,8 @@
 //      it (the seed adds random numbers to all start values), at the design speed (seed: 2.3 m/s,
 //      the highest), foot parameters and gait optimised together under (3.24) and (10.1); every
 //      distinct optimum of the runs that passed the KKT test (an "acceptable" run is restarted, and
-//      left out if it stays one) is classified (design_class.hpp: stilt, wheel, no rolling,
-//      admissible) and the best admissible one is the density's design;
+//      left out if it stays one) is classified (design_class.hpp: under-resolved, stilt, wheel,
+//      no rolling, admissible) and the best admissible one is the density's design;
 //   2. free-foot continuation: the design continued with QPSQP over the speed grid, downwards from
 //      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange) but for the
 //      sharp corners of the design (k <= 1e-6 stays at its value, as k_H, k_T in Table 10.1); where the
