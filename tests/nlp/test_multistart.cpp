@@ -95,6 +95,40 @@ TEST(Multistart, RestartsTakeARunThatStoppedEarlyToItsKktPoint) {
   EXPECT_THROW(multistart_from(factory, start, o), std::invalid_argument);
 }
 
+// On the circle x0^2 + x1^2 = 4, nearest to (3, 1).
+struct CirclePoint {
+  static constexpr int n = 2, m_eq = 1, m_in = 0;
+  template <class T> static void evaluate(const T* x, T& f, T* eq, T*) {
+    f = (x[0] - 3.0) * (x[0] - 3.0) + (x[1] - 1.0) * (x[1] - 1.0);
+    eq[0] = x[0] * x[0] + x[1] * x[1] - 4.0;
+  }
+};
+
+TEST(Multistart, RestartsOnlyRunsThatEndedNearlyFeasible) {
+  // One SQP iteration from (3, 3) leaves the circle: the run ends infeasible, with violation v.
+  MultistartOptions o;
+  o.num_threads = 1;
+  o.solver.solver = SolverKind::sqp;
+  o.solver.max_iterations = 1;
+  const auto factory = [] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<CirclePoint>>(); };
+  const std::vector<Eigen::VectorXd> start{Eigen::Vector2d(3.0, 3.0)};
+  const MultistartResult once = multistart_from(factory, start, o);
+  const double v = once.runs[0].constraint_violation;
+  ASSERT_FALSE(once.runs[0].success()) << once.runs[0].message;
+  ASSERT_GT(v, 1e-3);
+  o.restarts = 1;
+  o.restart_max_violation = 0.5 * v;
+  const MultistartResult kept = multistart_from(factory, start, o);
+  EXPECT_EQ(kept.runs[0].message.find("restart"), std::string::npos) << kept.runs[0].message;
+  EXPECT_EQ(kept.runs[0].iterations, once.runs[0].iterations);
+  o.restart_max_violation = 2.0 * v;
+  const MultistartResult restarted = multistart_from(factory, start, o);
+  EXPECT_NE(restarted.runs[0].message.find("restart 1"), std::string::npos) << restarted.runs[0].message;
+  EXPECT_GT(restarted.runs[0].iterations, once.runs[0].iterations);
+  o.restart_max_violation = -1.0;
+  EXPECT_THROW(multistart_from(factory, start, o), std::invalid_argument);
+}
+
 TEST(Multistart, KktOnlyRestartsAcceptableRunsAndLeavesOutThoseThatStayAcceptable) {
   // A TolStep far above the steps makes each SQP solve stop at its first step as "acceptable"
   // (Algorithm 1 step 3) without moving: a potential KKT point that is none.

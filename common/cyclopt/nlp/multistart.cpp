@@ -21,6 +21,8 @@ void validate(const MultistartOptions& o) {
   if (!(o.objective_tolerance >= 0)) throw std::invalid_argument("MultistartOptions.objective_tolerance: must be >= 0");
   if (!(o.x_tolerance >= 0)) throw std::invalid_argument("MultistartOptions.x_tolerance: must be >= 0");
   if (o.restarts < 0) throw std::invalid_argument("MultistartOptions.restarts: must be >= 0");
+  if (!(o.restart_max_violation >= 0.0))
+    throw std::invalid_argument("MultistartOptions.restart_max_violation: must be >= 0 (infinity: every run)");
   validate(o.solver);
 }
 
@@ -82,7 +84,7 @@ MultistartResult multistart_from(const ProblemFactory& make_problem, std::vector
         std::optional<SolverSummary> recorded = options.recorded_run ? options.recorded_run(i) : std::nullopt;
         run = recorded ? std::move(*recorded)
                        : solve_with_restarts(*problem, options.solver, result.starts[static_cast<size_t>(i)],
-                                             options.restarts, options.acceptance);
+                                             options.restarts, options.acceptance, options.restart_max_violation);
         if (run.termination == Termination::user_stop) continue;
         const std::lock_guard<std::mutex> lock(finished_mutex);
         if (options.on_run_finished && !recorded) options.on_run_finished(i, run);

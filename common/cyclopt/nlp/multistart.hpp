@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
@@ -34,6 +35,8 @@ struct MultistartOptions {
   // A run that ends without a KKT point (and not stopped) is solved again from its final point, at
   // most `restarts` times (solve_with_restarts, solve.hpp). >= 0.
   int restarts = 0;
+  // ... but not a run whose constraint violation is above this when it ends (solve_with_restarts). >= 0.
+  double restart_max_violation = std::numeric_limits<double>::infinity();
   // The runs that count as successful (ranking, optima, successes, on_progress's best) and that are
   // not restarted: with kkt_only an "acceptable" run is restarted and, if it stays one, left out.
   Acceptance acceptance = Acceptance::kkt_or_acceptable;

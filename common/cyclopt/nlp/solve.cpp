@@ -18,11 +18,12 @@ SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen:
 }
 
 SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts,
-                                  Acceptance acceptance) {
+                                  Acceptance acceptance, double max_violation) {
   if (restarts < 0) throw std::invalid_argument("restarts: must be >= 0");
+  if (!(max_violation >= 0.0)) throw std::invalid_argument("max_violation: must be >= 0");
   SolverSummary run = solve(problem, options, x0);
   for (int k = 1; k <= restarts && !accepted(run, acceptance) && run.termination != Termination::user_stop && run.x.size() > 0 &&
-                  run.x.allFinite();
+                  run.x.allFinite() && run.constraint_violation <= max_violation;
        ++k) {
     SolverSummary again = solve(problem, options, run.x);
     again.iterations += run.iterations;

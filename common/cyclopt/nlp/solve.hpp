@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <limits>
+
 namespace cyclopt::nlp {
 
 // Throws std::invalid_argument for invalid options (naming the field) or a wrongly sized x0.
@@ -14,10 +16,13 @@ SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen:
 // solve(), then, while the result is not accepted (and not stopped), up to `restarts` fresh solves
 // from the last final point: a fresh solve starts with a fresh Hessian approximation, which takes
 // solves that stalled near an optimum (MaxFun, no merit decrease, with kkt_only a step below
-// TolStep) the rest of the way. The summary is the last solve's, with the iterations, evaluations
-// and seconds of all of them and the earlier stops named in its message. Throws as solve(), and
-// std::invalid_argument for restarts < 0.
+// TolStep) the rest of the way. A solve that ends with a constraint violation above
+// max_violation is not solved again: it stopped far from any KKT point, where a fresh Hessian does
+// not help. The summary is the last solve's, with the iterations, evaluations and seconds of all
+// of them and the earlier stops named in its message. Throws as solve(), and
+// std::invalid_argument for restarts < 0 or max_violation < 0 or NaN.
 SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts,
-                                  Acceptance acceptance = Acceptance::kkt_or_acceptable);
+                                  Acceptance acceptance = Acceptance::kkt_or_acceptable,
+                                  double max_violation = std::numeric_limits<double>::infinity());
 
 }  // namespace cyclopt::nlp
