@@ -27,6 +27,9 @@ using nlp::Clock;
 using nlp::seconds_since;
 
 
+// A coarse solve that ends with at most this constraint violation found a gait on the coarse grid.
+constexpr double kCoarseFeasible = 1e-6;
+
 bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
 // The best optimum of a multistart (its optima are best first), if any.
@@ -161,7 +164,13 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
   const nlp::MultistartResult c = solve_batch(coarse, v, starts);
   std::vector<Eigen::VectorXd> optima;
   for (const nlp::MultistartOptimum& optimum : c.optima) optima.push_back(optimum.x);
-  // No coarse optimum (a gait that exists at P only, or every coarse solve failed): all starts at P.
+  // No coarse optimum: all starts at P if the coarse grid may lack the gait (no coarse run ended
+  // feasible); else the batch found none (SpeedSweepOptions::coarse_points).
+  if (optima.empty() && std::any_of(c.runs.begin(), c.runs.end(), [](const nlp::SolverSummary& run) {
+        return run.termination != nlp::Termination::evaluation_failure && run.termination != nlp::Termination::user_stop &&
+               run.constraint_violation <= kCoarseFeasible;
+      }))
+    return c;
   nlp::MultistartResult fine = solve_batch(model_, v, optima.empty() ? std::move(starts) : std::move(optima));
   fine.runs.insert(fine.runs.begin(), c.runs.begin(), c.runs.end());  // every solve counts
   return fine;
@@ -440,7 +449,7 @@ void Sweep::recover(const Target& target) {
     const walker::GaitProblem shape(model_, at_speed(v));
     const walker::GaitEvaluator ev(model_);
     std::vector<Eigen::VectorXd> perturbed;
-    for (int i = 0; i < o_.starts; ++i) {
+    for (int i = 0; i < (target.unreached ? o_.starts : o_.dominance_starts); ++i) {
       std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
       Eigen::VectorXd z = starts[static_cast<std::size_t>(i) % starts.size()];
       z.head(shape.gait_parameters(z).size()) = walker::perturbed_gait(ev, shape.gait_parameters(z), o_.scale, rng);
@@ -586,6 +595,7 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
     throw std::invalid_argument("speeds: need at least two strictly ascending values");
   if (options.seed_speeds.empty()) throw std::invalid_argument("seed_speeds: need at least one speed");
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
+  if (options.dominance_starts < 1) throw std::invalid_argument("dominance_starts: must be >= 1");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
   if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
   if (options.coarse_points < 0) throw std::invalid_argument("coarse_points: must be >= 0 (0: off)");

@@ -17,7 +17,7 @@
 //      curve (the dominated test: only from the neighbour's point), jumping over the place where
 //      continuation failed;
 //   R2 neighbour multistart (unreached speeds, and dominated tests where R1 found no KKT point at
-//      all): `starts` perturbations of those points;
+//      all): `starts` (dominance tests: `dominance_starts`) perturbations of those points;
 //   R3 gait multistart (unreached speeds that were no seed speed): `starts` perturbations of the
 //      automatic starting gait at that speed, as at the seed speeds.
 // A recovered point better than what the speed had opens a new curve, continued with QPSQP in
@@ -57,6 +57,11 @@ struct SpeedSweepOptions {
   int starts = 20;                                  // multistart runs per seed speed (seed: 20)
   std::uint64_t seed = 1;                           // base seed of the random perturbations
   double scale = 0.05;                              // rad, of the perturbations
+  // R2 perturbations in a dominance test (below; an unreached speed gets `starts`). Measured with
+  // 20 starts (bench/results/speed_sweep_bench.txt): P2-shoes HMT the same 21 optima with 5 as with
+  // 20, 129 s instead of 191 s; the rho 10 low-speed design of the foot design study 173 s instead of
+  // 381 s, three speeds of 21 at worse optima (0.6 m/s +13 %, 0.9 and 1.0 m/s +0.7 %), mean +0.2 %.
+  int dominance_starts = 5;
   int max_curves = 24;                              // curves continued at most (each jump or recovery opens one)
   bool recover = true;                              // R1-R3 above; false: the seed's workflow only
   // A seed optimum lies on a known curve if a converged point there has |f - f_c| <=
@@ -72,8 +77,12 @@ struct SpeedSweepOptions {
   // Coarse-to-fine multistart (issue 16 item 3): a batch of perturbed starts (step 1, R2, R3) is
   // solved with P = coarse_points grid points of (5.93) first - the gait parameters (5.92) do not
   // depend on P, and a Jacobian costs ~P - and every distinct coarse optimum is then polished at
-  // the model's P (all starts at P if no coarse solve converged). Every reported optimum is a KKT
-  // point at the model's P. 0, or >= the model's P: every start at the model's P. Measured on
+  // the model's P. Every reported optimum is a KKT point at the model's P. If no coarse solve
+  // converged, the starts are solved at P only when no coarse solve ended feasible either (the
+  // coarse grid may lack the gait); where coarse solves reached feasible gaits but no KKT point,
+  // solving the starts again at P found none either (P2-shoes HMT at 0.3 m/s: 0/20 in 14 s; the
+  // rho 10 low-speed design of the foot design study: 0/20 in 59 s CPU). 0, or >= the model's P:
+  // every start at the model's P. Measured on
   // this 2-core machine (bench/results/speed_sweep_bench.txt): point feet the same optima at all 21
   // speeds in 29.6 instead of 41.7 s; P2-shoes HMT (with R2 after a failed dominance R1) every speed
   // as good or better (2.3 m/s f_mech 0.0427 instead of 0.0497) in the same time.
