@@ -68,13 +68,19 @@ TEST(Multistart, ReproducibleRegardlessOfThreadCountAndMergesDuplicates) {
   }
 }
 
-TEST(Multistart, RestartsTakeARunThatStoppedEarlyToItsKktPoint) {
-  // Two SQP iterations per solve do not reach a minimum from (2, -2); solving again from the
-  // final point a few times does, and the run adds up the work of every solve.
+// Runs one at a time with the SQP, at most max_iterations each.
+MultistartOptions sqp_on_one_thread(int max_iterations) {
   MultistartOptions o;
   o.num_threads = 1;
   o.solver.solver = SolverKind::sqp;
-  o.solver.max_iterations = 2;
+  o.solver.max_iterations = max_iterations;
+  return o;
+}
+
+TEST(Multistart, RestartsTakeARunThatStoppedEarlyToItsKktPoint) {
+  // Two SQP iterations per solve do not reach a minimum from (2, -2); solving again from the
+  // final point a few times does, and the run adds up the work of every solve.
+  MultistartOptions o = sqp_on_one_thread(2);
   const auto factory = [] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<FourWells>>(); };
   const std::vector<Eigen::VectorXd> start{Eigen::Vector2d(2.0, -2.0)};
   const MultistartResult once = multistart_from(factory, start, o);
@@ -106,10 +112,7 @@ struct CirclePoint {
 
 TEST(Multistart, RestartsOnlyRunsThatEndedNearlyFeasible) {
   // One SQP iteration from (3, 3) leaves the circle: the run ends infeasible, with violation v.
-  MultistartOptions o;
-  o.num_threads = 1;
-  o.solver.solver = SolverKind::sqp;
-  o.solver.max_iterations = 1;
+  MultistartOptions o = sqp_on_one_thread(1);
   const auto factory = [] { return std::make_unique<cyclopt::nlp::testing::AutodiffProblem<CirclePoint>>(); };
   const std::vector<Eigen::VectorXd> start{Eigen::Vector2d(3.0, 3.0)};
   const MultistartResult once = multistart_from(factory, start, o);
