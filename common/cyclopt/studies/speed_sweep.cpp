@@ -449,7 +449,8 @@ void Sweep::recover(const Target& target) {
     const walker::GaitProblem shape(model_, at_speed(v));
     const walker::GaitEvaluator ev(model_);
     std::vector<Eigen::VectorXd> perturbed;
-    for (int i = 0; i < (target.unreached ? o_.starts : o_.dominance_starts); ++i) {
+    const int count = target.unreached || o_.dominance_starts == 0 ? o_.starts : o_.dominance_starts;
+    for (int i = 0; i < count; ++i) {
       std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
       Eigen::VectorXd z = starts[static_cast<std::size_t>(i) % starts.size()];
       z.head(shape.gait_parameters(z).size()) = walker::perturbed_gait(ev, shape.gait_parameters(z), o_.scale, rng);
@@ -595,7 +596,7 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
     throw std::invalid_argument("speeds: need at least two strictly ascending values");
   if (options.seed_speeds.empty()) throw std::invalid_argument("seed_speeds: need at least one speed");
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
-  if (options.dominance_starts < 1) throw std::invalid_argument("dominance_starts: must be >= 1");
+  if (options.dominance_starts < 0) throw std::invalid_argument("dominance_starts: must be >= 0 (0: starts)");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
   if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
   if (options.coarse_points < 0) throw std::invalid_argument("coarse_points: must be >= 0 (0: off)");

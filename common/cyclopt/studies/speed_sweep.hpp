@@ -57,11 +57,12 @@ struct SpeedSweepOptions {
   int starts = 20;                                  // multistart runs per seed speed (seed: 20)
   std::uint64_t seed = 1;                           // base seed of the random perturbations
   double scale = 0.05;                              // rad, of the perturbations
-  // R2 perturbations in a dominance test (below; an unreached speed gets `starts`). Measured with
-  // 20 starts (bench/results/speed_sweep_bench.txt): P2-shoes HMT the same 21 optima with 5 as with
-  // 20, 129 s instead of 191 s; the rho 10 low-speed design of the foot design study 173 s instead of
-  // 381 s, three speeds of 21 at worse optima (0.6 m/s +13 %, 0.9 and 1.0 m/s +0.7 %), mean +0.2 %.
-  int dominance_starts = 5;
+  // R2 perturbations in a dominance test (below; an unreached speed gets `starts`); 0: `starts`.
+  // Fewer are faster and find fewer better optima - measured with 20 starts and 5 here
+  // (bench/results/speed_sweep_bench.txt, foot_design_bench.txt): P2-shoes HMT the same 21 optima in
+  // 129 s instead of 191 s, but the foot design's low-speed sweeps kept worse optima at 0.4-0.7 m/s
+  // (rho 40 saving 17.6 % instead of 19.6 %, rho 60 6.7 % instead of 7.8 %), hence the default.
+  int dominance_starts = 0;
   int max_curves = 24;                              // curves continued at most (each jump or recovery opens one)
   bool recover = true;                              // R1-R3 above; false: the seed's workflow only
   // A seed optimum lies on a known curve if a converged point there has |f - f_c| <=
