@@ -38,8 +38,8 @@ constexpr int kDesignRestarts = 2;
 // ... only of a run that ended nearly feasible (nlp::MultistartOptions::restart_max_violation).
 // rho 10, 20 starts (bench/results/foot_design_bench.txt): the three runs a restart took to a KKT
 // point (the design among them) ended their first solve at violations 2.3e-5, 2.5e-7 and 3.5e-5;
-// start 6 stalled at 0.4 - in the elastic QPs (6.13)/(6.14), 0.6 s per iteration - and its two
-// restarts took 150 of its 273 s without coming closer.
+// start 6 stalled at 0.4 - in the elastic QPs (6.13)/(6.14), 0.3-0.6 s per iteration - and its two
+// restarts took 115 of its 273.5 s without coming closer (158.0 s without them).
 constexpr double kDesignRestartMaxViolation = 1e-3;
 // Iterations of one design multistart solve (each restart has as many again). With the corners held
 // (default_design_parameters), rho 10, 8 starts: the runs reaching the best optima (0.02256,
