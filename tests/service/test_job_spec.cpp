@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
+
 namespace cyclopt::service {
 namespace {
 
@@ -32,7 +35,13 @@ nlohmann::json sweep_spec() {
 TEST(ValueRange, ColonSyntaxIncludesTheEnd) {
   const auto v = parse_value_range("0.3:0.1:2.3", "speeds", 0.0, 5.0);
   ASSERT_EQ(v.size(), 21u);
-  EXPECT_NEAR(v.back(), 2.3, 1e-12);
+  for (int i = 0; i <= 20; ++i) {  // each the double of its decimal, as if typed: 0.3 + 0.1 i is not
+    char decimal[8];
+    std::snprintf(decimal, sizeof decimal, "%.1f", 0.3 + 0.1 * i);
+    EXPECT_EQ(v[static_cast<std::size_t>(i)], std::stod(decimal)) << decimal;
+  }
+  EXPECT_NE(0.3 + 0.1 * 3, 0.6);  // what the grid would hold unrounded
+  EXPECT_EQ(parse_value_range("-0.2:0.1:0.2", "values", -1.0, 1.0)[2], 0.0);  // not 2.8e-17
   EXPECT_EQ(parse_value_range(1.5, "speeds", 0.0, 5.0), std::vector<double>{1.5});
   EXPECT_EQ(parse_value_range(nlohmann::json::array({1, 2}), "speeds", 0.0, 5.0), (std::vector<double>{1, 2}));
 }

@@ -25,6 +25,19 @@ double parse_number(const std::string& text, const std::string& path, const std:
   return x;
 }
 
+// lo + i step as the user reads it: rounded to 9 decimals below the step's leading digit, so that
+// 0.3 + 3 * 0.1 = 0.6000000000000001 becomes 0.6, the double of "0.6". A grid point and the same
+// value typed as a number are then the same problem, and the same stored speed (the walker's
+// solves are chaotic in the last bits: a sweep over the unrounded grid found other local optima).
+// n / 10^k with both exact is the double nearest the decimal n 10^-k.
+double decimal_grid_value(double v, double step) {
+  const int k = 9 - static_cast<int>(std::floor(std::log10(step)));
+  if (k < 0 || k > 22) return v;          // 10^k exact in double for 0 <= k <= 22
+  const double scale = std::pow(10.0, k);
+  const double n = std::round(v * scale);
+  return std::abs(n) < 0x1p53 ? n / scale : v;  // n exact
+}
+
 std::vector<double> parse_colon_range(const std::string& s, const std::string& path) {
   const std::string syntax = "\"lo:step:hi\" (e.g. \"0.3:0.1:2.3\"), a number or an array of numbers";
   std::vector<std::string> parts;
@@ -51,7 +64,7 @@ std::vector<double> parse_colon_range(const std::string& s, const std::string& p
   }
   const int n = static_cast<int>(std::floor(steps * (1.0 + kOnGrid) + kOnGrid)) + 1;
   std::vector<double> out;
-  for (int i = 0; i < n; ++i) out.push_back(std::min(lo + step * i, hi));  // the last point may round above hi
+  for (int i = 0; i < n; ++i) out.push_back(std::min(decimal_grid_value(lo + step * i, step), hi));  // the last may round above hi
   return out;
 }
 
