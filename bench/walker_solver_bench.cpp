@@ -6,7 +6,7 @@
 //   FOOT: a preset name (cyclopt-foot --list-presets); SOLVER: sqp or ipopt; name=value: Ipopt
 //   options (integer, number or string, recognised in that order); the word difference_hessian
 //   sets SqpOptions::difference_hessian, difference_start IpoptOptions::difference_hessian_start, refresh=K
-//   difference_hessian_every = K of both solvers, the word lbfgs Ipopt's limited-memory Hessian instead of the
+//   difference_hessian_every = K of both solvers, band=W the positive_power_band of f_mech (W), the word lbfgs Ipopt's limited-memory Hessian instead of the
 //   adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102), the word verbose one line per iteration.
 #include "bench_foot.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
@@ -56,6 +56,8 @@ int main(int argc, char** argv) {
       so.ipopt.difference_hessian_start = true;
     else if (std::string(argv[k]).rfind("refresh=", 0) == 0)  // a fresh (6.24) every K iterations, both solvers
       so.sqp.difference_hessian_every = so.ipopt.difference_hessian_every = std::atoi(argv[k] + 8);
+    else if (std::string(argv[k]).rfind("band=", 0) == 0)  // GaitProblemOptions::positive_power_band (W)
+      po.positive_power_band = std::atof(argv[k] + 5);
     else if (std::string(argv[k]) == "lbfgs")
       so.ipopt.hessian = nlp::IpoptHessian::limited_memory;
     else if (std::string(argv[k]) == "verbose")

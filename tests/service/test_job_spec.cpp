@@ -121,6 +121,17 @@ TEST(JobSpec, ErrorsNameTheField) {
   EXPECT_EQ(field_of(with("/sweep/parameter", "gamma_F_typo")), "sweep.parameter");
   EXPECT_EQ(field_of(with("/sweep/values", "0:10:2000")), "sweep.values");
   EXPECT_EQ(field_of(with("/point_delay_ms", 20000)), "point_delay_ms");
+  const nlohmann::json optimise = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.0}};
+  auto optimise_with = [&](const nlohmann::json& extra) {
+    nlohmann::json o = optimise;
+    o.update(extra);
+    return o;
+  };
+  EXPECT_EQ(field_of(optimise_with({{"positive_power_band", -1e-3}})), "positive_power_band");
+  EXPECT_EQ(field_of(optimise_with({{"positive_power_band", 5.0}})), "positive_power_band");
+  EXPECT_EQ(field_of(optimise_with({{"positive_power_band", 1e-3}, {"quadrature", "corrected_trapezoid"}})),
+            "positive_power_band");
+  EXPECT_EQ(field_of(optimise_with({{"positive_power_band", 1e-3}})), "");
   // Grid values that make an invalid foot are caught before the job is queued.
   nlohmann::json s = with("/sweep/parameter", "l_HA");
   s["sweep"]["values"] = "0.05:0.1:0.95";

@@ -83,7 +83,7 @@ TEST(ResolvedSpec, TheResolvedSpecOfAWalkerJobIsTheSameJob) {
   const std::vector<nlohmann::json> specs = {
       {{"scene", "walker"}, {"task", "evaluate"}, {"foot", "point"}, {"speed", 1.0}},
       {{"scene", "walker"}, {"task", "optimise"}, {"foot", "P1-barefoot-left-HM"}, {"speed", 1.3},
-       {"objective", "f_usq"}, {"solver", {{"solver", "ipopt"}}}, {"free_parameters", {"l_HM", "h_F"}},
+       {"objective", "f_usq"}, {"solver", {{"solver", "ipopt"}}}, {"free_parameters", {"l_HM", "h_F"}}, {"positive_power_band", 1e-3},
        {"design_bounds", {{"l_HM_max", 0.3}}}},
       {{"scene", "walker"}, {"task", "multistart"}, {"foot", "P1-barefoot-left-HM"}, {"speed", 1.3},
        {"multistart", {{"starts", 4}}}, {"name", "four starts"}, {"limits", {{"max_wall_seconds", 60}}}},
@@ -130,7 +130,7 @@ TEST(ResolvedSpec, AFootComparisonSpellsOutEveryFootAndTheSweepDefaults) {
       {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.5:0.5:1.0"}});
   std::printf("resolved foot_comparison spec: %zu bytes\n", r.dump().size());
   EXPECT_EQ(keys(r), (std::set<std::string>{"scene", "task", "speeds", "objective", "points", "bezier_degree",
-                                            "quadrature", "solver", "multistart", "reference", "feet",
+                                            "quadrature", "positive_power_band", "solver", "multistart", "reference", "feet",
                                             "continuation"}));
   EXPECT_EQ(r["reference"], (nlohmann::json{{"model", "point"}, {"name", "point"}}));
   const auto section_9_2 = foot::select_fitted_feet({.section_9_2_only = true});
@@ -145,6 +145,7 @@ TEST(ResolvedSpec, AFootComparisonSpellsOutEveryFootAndTheSweepDefaults) {
   EXPECT_EQ(r["bezier_degree"], 6);
   EXPECT_EQ(r["objective"], "f_mech");
   EXPECT_EQ(r["quadrature"], "trapezoid");
+  EXPECT_EQ(r["positive_power_band"], 0.0);  // the seed's positive part (5.100)
   EXPECT_EQ(r["solver"], (nlohmann::json{{"solver", "sqp"}, {"max_iterations", 2000}, {"optimality_tolerance", 1e-5},
                                          {"constraint_tolerance", 1e-10}, {"print_level", 0}}));
   EXPECT_EQ(r["multistart"], (nlohmann::json{{"starts", 20}, {"seed", 1}, {"scale", 0.05}}));

@@ -174,7 +174,7 @@ TEST(Quadrature, PositivePartRuleIsFourthOrderAcrossSignChanges) {
     for (int i = 0; i < P; ++i) f(i) = g(i * h);
     err[k] = std::abs(positive_part_integral(f, h) - exact);
     double seed = 0.0;
-    for (int i = 0; i + 1 < P; ++i) seed += detail::positive_part_trapezoid(f(i), f(i + 1), h);
+    for (int i = 0; i + 1 < P; ++i) seed += positive_part_trapezoid(f(i), f(i + 1), h);
     err_seed[k++] = std::abs(seed - exact);
   }
   std::printf("positive part of sin(3x) + 0.3: error %.2e / %.2e (P = 101 / 201, ratio %.1f); seed's rule %.2e / %.2e\n",

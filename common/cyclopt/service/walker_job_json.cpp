@@ -15,6 +15,7 @@ nlohmann::json walker_job_json(const WalkerJob& job, bool sweep, bool random_sta
   j["points"] = job.constants.points;
   j["bezier_degree"] = job.constants.bezier_degree;
   j["quadrature"] = job.problem.quadrature == walker::Quadrature::trapezoid ? "trapezoid" : "corrected_trapezoid";
+  j["positive_power_band"] = job.problem.positive_power_band;
   j["free_parameters"] = job.problem.free_parameters;
   if (job.problem.design_bounds) {
     const foot::DesignBounds& b = *job.problem.design_bounds;

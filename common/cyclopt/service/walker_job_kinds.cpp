@@ -37,6 +37,7 @@ void run_evaluate(const WalkerJob& job, JobContext& ctx) {
   go.objective = job.problem.objective;
   go.speed = v;
   go.quadrature = job.problem.quadrature;
+  go.positive_power_band = job.problem.positive_power_band;
   storage::SolutionPoint p = point_of(ev.evaluate(start.x, go), start, {0, 0}, v);
   p.iterations = 1;
   ctx.count_iterations(1);

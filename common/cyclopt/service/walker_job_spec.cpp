@@ -20,8 +20,8 @@ foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
 }
 
 std::vector<std::string> walker_job_fields(bool sweep) {
-  return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "free_parameters", "design_bounds",
-          "start", "multistart"};
+  return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "positive_power_band",
+          "free_parameters", "design_bounds", "start", "multistart"};
 }
 
 WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
@@ -46,6 +46,10 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
                                      "trapezoid"
                                  ? walker::Quadrature::trapezoid
                                  : walker::Quadrature::corrected_trapezoid;
+  job.problem.positive_power_band = optional_number(spec, "", "positive_power_band", 0.0, walker::kMaxPositivePowerBand)
+                                        .value_or(job.problem.positive_power_band);
+  if (job.problem.positive_power_band > 0.0 && job.problem.quadrature != walker::Quadrature::trapezoid)
+    throw SpecError("positive_power_band", "> 0 needs \"quadrature\": \"trapezoid\"");
   const walker::WalkerModel<double> model = job.model();
   if (spec.contains("free_parameters")) {
     const nlohmann::json& fp = spec["free_parameters"];

@@ -11,7 +11,8 @@
 // (m/s, [0.1, 3]) for evaluate / optimise / multistart, speeds ("lo:step:hi", a number or an
 // array) for sweep; objective f_mech (5.102, default) or f_usq (5.101); points P in [25, 20000]
 // (eq. 5.93, default 200); bezier_degree M in [3, 10] (default 6); quadrature trapezoid (the
-// seed's) or corrected_trapezoid; free_parameters: model parameters optimised with the gait
+// seed's) or corrected_trapezoid; positive_power_band (W, [0, 1], default 0; trapezoid only):
+// walker::GaitProblemOptions::positive_power_band; free_parameters: model parameters optimised with the gait
 // (with foot.density: the foot parameters and "density", not m_F, r_F, J_F, theta_F0, which then
 // follow the geometry); design_bounds: the foot dimension bounds of eq. (10.1)
 // (design_bounds_spec.hpp);

@@ -11,6 +11,10 @@ namespace cyclopt::walker {
 GaitProblem::GaitProblem(const WalkerModel<double>& model, GaitProblemOptions options)
     : model_(model), evaluator_(model), options_(std::move(options)), gait_count_(evaluator_.parameter_count()) {
   parameter_names_ = model_parameter_names(model_);
+  if (!(options_.positive_power_band >= 0.0 && options_.positive_power_band <= kMaxPositivePowerBand))
+    throw std::invalid_argument("positive_power_band: must be in [0, " + std::to_string(kMaxPositivePowerBand) + "] W");
+  if (options_.positive_power_band > 0.0 && options_.quadrature != Quadrature::trapezoid)
+    throw std::invalid_argument("positive_power_band: > 0 needs the trapezoid rule (quadrature \"trapezoid\")");
   bool foot_free = false;
   for (const std::string& name : options_.free_parameters) {
     const int idx = model_parameter_index(model_, name);
@@ -85,6 +89,7 @@ GaitOptions GaitProblem::gait_options(bool trajectories) const {
   o.objective = options_.objective;
   o.speed = options_.speed;
   o.quadrature = options_.quadrature;
+  o.positive_power_band = options_.positive_power_band;
   o.keep_trajectories = trajectories;
   return o;
 }

@@ -21,17 +21,24 @@
 
 namespace cyclopt::walker {
 
+// Largest admissible GaitProblemOptions::positive_power_band (W): joint powers of a walking gait are
+// tens of W, so a wider band would change f_mech itself.
+inline constexpr double kMaxPositivePowerBand = 1.0;
+
 struct GaitProblemOptions {
   Objective objective = Objective::mechanical;
   double speed = 1.3;                          // v_bar (m/s)
   Quadrature quadrature = Quadrature::trapezoid;
   std::vector<std::string> free_parameters;    // names from model_parameter_names(), e.g. {"l_HM", "k_HM"}
   std::optional<foot::DesignBounds> design_bounds = std::nullopt;  // eq. (10.1) rows, with free foot parameters
+  double positive_power_band = 0.0;  // W, GaitOptions::positive_power_band, in [0, kMaxPositivePowerBand]; > 0
+                                     // needs the trapezoid rule
 };
 
 class GaitProblem : public nlp::Problem {
  public:
-  // Throws std::invalid_argument naming an unknown free parameter (with the valid names).
+  // Throws std::invalid_argument naming an unknown free parameter (with the valid names) or a
+  // positive_power_band outside its range.
   GaitProblem(const WalkerModel<double>& model, GaitProblemOptions options);
 
   int num_variables() const override;

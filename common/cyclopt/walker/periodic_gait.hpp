@@ -11,6 +11,7 @@
 
 #include "cyclopt/walker/bezier_basis.hpp"
 #include "cyclopt/walker/grid_point.hpp"
+#include "cyclopt/walker/positive_power.hpp"
 #include "cyclopt/walker/quadrature.hpp"
 #include "cyclopt/walker/virtual_constraints.hpp"
 
@@ -28,6 +29,9 @@ struct GaitOptions {
   double speed = 1.3;             // target mean speed v_bar (m/s), eq. (5.103)
   bool keep_trajectories = true;  // fill PeriodicGait::trajectory
   Quadrature quadrature = Quadrature::trapezoid;  // for iota, int mu2/iota, time and f_usq (5.80-5.96)
+  // W, >= 0: f_mech's positive part (5.100) rounded on |u q_dot| < band (positive_power.hpp); 0: the
+  // seed's rule. Trapezoid rule only.
+  double positive_power_band = 0.0;
 };
 
 // Indices into the inequality vector (eq. 5.104) for a given P.
@@ -78,20 +82,6 @@ struct PeriodicGait {
   VirtualConstraints<T> constraints;
   GaitTrajectory<T> trajectory;
 };
-
-namespace detail {
-
-// Integral of max(p, 0) over one interval with linear interpolation of a zero crossing (Fig. 5.3).
-template <class T>
-T positive_part_trapezoid(const T& p0, const T& p1, const T& dt) {
-  const double a = ad::value(p0), b = ad::value(p1);
-  if (a >= 0.0 && b >= 0.0) return 0.5 * (p0 + p1) * dt;
-  if (a <= 0.0 && b <= 0.0) return T(0.0);
-  const T frac = p0 / (p0 - p1);  // crossing at t0 + frac dt
-  return a > 0.0 ? T(0.5 * p0 * frac * dt) : T(0.5 * p1 * (1.0 - frac) * dt);
-}
-
-}  // namespace detail
 
 template <class MT, class XVector, class T = ad::promoted_t<MT, typename XVector::Scalar>>
 PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis, const XVector& x,
@@ -224,7 +214,7 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
   g.impact_energy_loss = (vc.unit_impact.kinetic_energy_minus - vc.unit_impact.kinetic_energy_plus) * td_minus * td_minus;
 
   // Energy per step (5.98-5.102), the seed's rules: trapezoid in time with the zero-crossing
-  // correction for f_mech, trapezoid in time for f_usq; corrected rules: in theta (dt = d theta /
+  // correction for f_mech (optionally rounded, positive_power.hpp), trapezoid in time for f_usq; corrected rules: in theta (dt = d theta /
   // theta_dot), positive_part_integral for f_mech and the corrected trapezoid for f_usq.
   const T weight_step = m.total_mass * T(m.constants.gravity) * g.step_length;
   const T c_A = T(m.constants.actuator_constant);
@@ -239,7 +229,10 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
   T e_mech = T(0.0), e_usq = T(0.0);
   if (opt.quadrature == Quadrature::trapezoid) {
     for (int j = 0; j < nb; ++j)
-      for (int i = 0; i + 1 < P; ++i) e_mech += detail::positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
+      for (int i = 0; i + 1 < P; ++i)
+        e_mech += opt.positive_power_band > 0.0
+                      ? rounded_positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i), opt.positive_power_band)
+                      : positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
   } else {  // in theta: int max(p, 0) dt = int max(p / theta_dot, 0) d theta
     Vector<T> power_per_theta(P);
     for (int j = 0; j < nb; ++j) {

@@ -1,0 +1,115 @@
+// f_mech's positive part over one trapezoid interval (positive_power.hpp): the rounded rule against
+// an independent fine quadrature of its definition, against the seed's rule outside the band, its
+// exact derivative against central differences, and what the band is for: a walker solve that
+// crawls at the kink of a joint held still reaches a KKT point with it.
+#include "cyclopt/autodiff/dual.hpp"
+#include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/walker/gait_optimisation.hpp"
+#include "cyclopt/walker/positive_power.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cyclopt::walker {
+namespace {
+
+// The rounded positive part written from its definition (not from the pieces of the rule).
+double rounded(double p, double e) { return std::abs(p) < e ? (p + e) * (p + e) / (4.0 * e) : std::max(p, 0.0); }
+
+// Its integral over the linear p from p0 to p1, by the midpoint rule on 200000 pieces.
+double fine_integral(double p0, double p1, double dt, double e) {
+  constexpr int n = 200000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += rounded(p0 + (p1 - p0) * (i + 0.5) / n, e);
+  return sum * dt / n;
+}
+
+// (p0, p1) pairs over every combination of pieces, band e = 0.01.
+std::vector<std::pair<double, double>> cases() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> wide(-0.05, 0.05), narrow(-0.012, 0.012);
+  std::vector<std::pair<double, double>> out{{-0.02, 0.03}, {0.03, -0.02}, {0.005, -0.004}, {-0.01, 0.01},
+                                             {0.02, 0.02},  {-0.02, -0.01}, {0.0, 0.0},     {0.004, 0.004}};
+  for (int i = 0; i < 40; ++i) out.emplace_back(wide(rng), wide(rng));
+  for (int i = 0; i < 40; ++i) out.emplace_back(narrow(rng), narrow(rng));
+  return out;
+}
+
+TEST(PositivePower, RoundedRuleIntegratesItsDefinitionExactly) {
+  const double e = 0.01, dt = 0.37;
+  for (const auto& [p0, p1] : cases()) {
+    const double rule = rounded_positive_part_trapezoid(p0, p1, dt, e);
+    EXPECT_NEAR(rule, fine_integral(p0, p1, dt, e), 1e-11) << "p0 " << p0 << " p1 " << p1;
+  }
+}
+
+TEST(PositivePower, RoundedRuleIsTheSeedsRuleOutsideTheBand) {
+  const double e = 0.01, dt = 0.37;
+  for (const auto& [p0, p1] : {std::pair{0.02, 0.5}, {-0.3, -0.01}, {0.011, 0.011}, {-2.0, -0.02}})
+    EXPECT_NEAR(rounded_positive_part_trapezoid(p0, p1, dt, e), positive_part_trapezoid(p0, p1, dt), 1e-15);
+  // Across the band the two differ by at most e/4 dt (the rounding's largest error, at p = 0).
+  for (const auto& [p0, p1] : cases())
+    EXPECT_LE(std::abs(rounded_positive_part_trapezoid(p0, p1, dt, e) - positive_part_trapezoid(p0, p1, dt)),
+              0.25 * e * dt + 1e-15);
+}
+
+TEST(PositivePower, RoundedRuleHasExactDerivatives) {
+  const double e = 0.01, h = 1e-7;
+  for (const auto& [p0, p1] : cases()) {
+    if (p0 == p1) continue;  // central differences would straddle the p0 = p1 case of the cut points
+    using D = ad::Dual<3>;
+    const D d = rounded_positive_part_trapezoid(D::variable(p0, 0), D::variable(p1, 1), D::variable(0.37, 2), e);
+    const auto f = [&](double a, double b, double t) { return rounded_positive_part_trapezoid(a, b, t, e); };
+    const double fd[3] = {(f(p0 + h, p1, 0.37) - f(p0 - h, p1, 0.37)) / (2 * h),
+                          (f(p0, p1 + h, 0.37) - f(p0, p1 - h, 0.37)) / (2 * h),
+                          (f(p0, p1, 0.37 + h) - f(p0, p1, 0.37 - h)) / (2 * h)};
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(d.d[k], fd[k], 1e-6 * std::max(1.0, std::abs(fd[k]))) << p0 << " " << p1 << " " << k;
+  }
+}
+
+// The large rolling foot of issue 16 (HM, h_F 100 mm, l_HA 109.5 mm, l_HM 400 mm, rho 10) from the
+// automatic starting gait at 1.3 m/s, P = 200 (bench/results/walker_solvers.txt): the seed's rule
+// ends at MaxFun (1260 iterations, KKT error 4.7e-4); with a 1 mW band a KKT point in 235.
+TEST(PositivePower, TheBandLetsTheSqpReachAKktPointOnTheLargeRollingFoot) {
+  std::ifstream in(std::string(CYCLOPT_SOURCE_DIR) + "/bench/feet/large_rolling_hm.json");
+  ASSERT_TRUE(in.good());
+  const WalkerModel<double> model = make_walker_model(io::foot_spec_from_json(nlohmann::json::parse(in)));
+  nlp::SolverOptions sqp = nlp::seed_table_6_2_options();  // the walker_solver_bench settings of the table
+  sqp.max_iterations = 3000;
+  sqp.sqp.difference_hessian = true;
+  sqp.sqp.difference_hessian_every = 50;
+  GaitProblemOptions po{Objective::mechanical, 1.3, Quadrature::trapezoid, {}};
+  po.positive_power_band = 1e-3;
+  const nlp::SolverSummary rounded_run = optimise_gait(model, po, sqp).summary;
+  EXPECT_EQ(rounded_run.termination, nlp::Termination::converged) << rounded_run.message;
+  EXPECT_LE(rounded_run.iterations, 400);  // 235 measured
+  EXPECT_LE(rounded_run.kkt_error, 1e-5);
+  po.positive_power_band = 0.0;
+  const nlp::SolverSummary seed_run = optimise_gait(model, po, sqp).summary;  // the case the band is for
+  EXPECT_NE(seed_run.termination, nlp::Termination::converged) << "the seed's rule converges here now: pick a harder case";
+}
+
+TEST(PositivePower, GaitProblemRejectsABandOutsideItsRange) {
+  const WalkerModel<double> model = make_walker_model(foot::foot_preset("point").spec);
+  for (double band : {-1e-3, 2.0, std::nan("")}) {
+    GaitProblemOptions po;
+    po.positive_power_band = band;
+    EXPECT_THROW((void)GaitProblem(model, po), std::invalid_argument) << band;
+  }
+  GaitProblemOptions corrected;
+  corrected.quadrature = Quadrature::corrected_trapezoid;
+  corrected.positive_power_band = 1e-3;
+  EXPECT_THROW((void)GaitProblem(model, corrected), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cyclopt::walker
