@@ -9,10 +9,17 @@
 // Each block is printed as soon as its density ends (a long list stopped early keeps what it found).
 //
 // usage: foot_design_bench [densities = 10] [starts = 20] [speeds = 0.3:0.1:2.3] [sweep_starts = 4]
-//   densities: comma-separated; speeds: FROM:STEP:TO (the design speed is the last)
+//        [dominance_starts = 0] [band = 0]
+//   densities: comma-separated; speeds: FROM:STEP:TO (the design speed is the last); dominance_starts:
+//   SpeedSweepOptions::dominance_starts of every sweep (0: sweep_starts); band: the positive_power_band
+//   of f_mech (W, walker/positive_power.hpp) of every solve
 #include "cyclopt/foot/foot_presets.hpp"
+#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/foot_design.hpp"
 #include "machine_info.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -35,15 +42,15 @@ std::vector<double> list(const std::string& text) {
   return out;
 }
 
+// The service's grid ("0.3:0.1:2.3" holds 0.6, the double of "0.6"), so that this study solves what a
+// foot_design job of the same speeds solves.
 std::vector<double> grid(const std::string& text) {
-  double from = 0, step = 0, to = 0;
-  if (std::sscanf(text.c_str(), "%lf:%lf:%lf", &from, &step, &to) != 3 || !(step > 0) || to < from) {
-    std::fprintf(stderr, "speeds: expected FROM:STEP:TO, got '%s'\n", text.c_str());
+  try {
+    return service::parse_value_range(text, "speeds", service::kMinWalkingSpeed, service::kMaxWalkingSpeed);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     std::exit(1);
   }
-  std::vector<double> out;
-  for (int i = 0; from + i * step <= to + 1e-9; ++i) out.push_back(std::round((from + i * step) * 1e9) / 1e9);
-  return out;
 }
 
 // Its speeds and mean f_mech, how many of its points are only "acceptable" (a step below TolStep,
@@ -128,15 +135,17 @@ int main(int argc, char** argv) {
   o.starts = argc > 2 ? std::atoi(argv[2]) : 20;
   o.sweep.speeds = grid(argc > 3 ? argv[3] : "0.3:0.1:2.3");
   o.sweep.starts = argc > 4 ? std::atoi(argv[4]) : 4;
+  if (argc > 5) o.sweep.dominance_starts = std::atoi(argv[5]);
   o.design_speed = o.sweep.speeds.back();
   o.on_step = [](const std::string& step) {
     std::printf("-- %s\n", step.c_str());
     std::fflush(stdout);
     return true;
   };
+  walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
+  if (argc > 6) problem.positive_power_band = std::atof(argv[6]);
   std::printf("foot_design_bench on %s\n", bench::machine_line().c_str());
-  std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep\n",
-              o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts);
+
   // Each result is printed as soon as it is known, so a long list leaves every finished density.
   const std::size_t n = o.sweep.speeds.size();
   studies::FootSweepSummary start_foot, point_feet;
@@ -164,8 +173,11 @@ int main(int argc, char** argv) {
     }
     return true;
   };
+  std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep"
+              " (%d in its dominance tests), positive-power band %g W\n",
+              o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts,
+              o.sweep.dominance_starts > 0 ? o.sweep.dominance_starts : o.sweep.starts, problem.positive_power_band);
   const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
-  const walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
   studies::FootDesignResult r;
   try {
     r = studies::design_feet(start, problem, o);

@@ -6,15 +6,20 @@
 //
 // usage: speed_sweep_bench [foot = point] [starts = 4] [budget_seconds = 600] [recover|plain] [P = 200]
 // [trapezoid|corrected] [coarse P = 100; SpeedSweepOptions::coarse_points, 0 off] [qp|qp-per-try|trivial|trivial_then_qp
-// predictor]:
+// predictor] [dominance starts = 0; SpeedSweepOptions::dominance_starts, 0 = starts] [band W = 0;
+// GaitProblemOptions::positive_power_band]:
 // foot is a preset name or a JSON foot file (bench/feet/); qp-per-try computes the predictor's difference Hessians
 // per try as Algorithm 2 (ContinuationOptions::reuse_predictor_hessian false), trivial gives the corrector W_1 of
 // (6.24); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off.
 #include "bench_foot.hpp"
+#include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 #include "machine_info.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -39,9 +44,11 @@ int main(int argc, char** argv) {
   const double cpu_at_start = bench::cpu_seconds();
   const walker::Quadrature rule =
       argc > 6 && std::string(argv[6]) == "corrected" ? walker::Quadrature::corrected_trapezoid : walker::Quadrature::trapezoid;
-  const walker::GaitProblemOptions po{walker::Objective::mechanical, 1.3, rule, {}};
+  walker::GaitProblemOptions po{walker::Objective::mechanical, 1.3, rule, {}};
+  if (argc > 10) po.positive_power_band = std::atof(argv[10]);
   SpeedSweepOptions o;
-  for (int i = 0; i <= 20; ++i) o.speeds.push_back(0.3 + 0.1 * i);
+  // The service's grid (0.3, 0.4, ..., 2.3 as typed), so that this sweep solves what a job solves.
+  o.speeds = service::parse_value_range("0.3:0.1:2.3", "speeds", service::kMinWalkingSpeed, service::kMaxWalkingSpeed);
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
@@ -49,6 +56,7 @@ int main(int argc, char** argv) {
     o.continuation.reuse_predictor_hessian = false;
   else if (argc > 8)
     o.continuation.predictor = parse_predictor(argv[8]);
+  if (argc > 9) o.dominance_starts = std::atoi(argv[9]);
   // The trivial predictor hands the corrector no W: it starts from W_1 of (6.24), as in continuation_bench.
   if (o.continuation.predictor == continuation::Predictor::trivial) o.continuation.corrector.sqp.difference_hessian = true;
   const SpeedSweepResult r = speed_sweep(model, po, o, [&](const CurvePoint& p) {
@@ -56,11 +64,12 @@ int main(int argc, char** argv) {
                 p.converged ? "ok    " : "FAILED", p.objective, p.corrector.iterations, p.seconds);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < budget;
   });
-  std::printf("\nfoot %s, f_mech, P = %d (multistarts at P = %d first), %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n",
-              foot_name.c_str(), constants.points, o.coarse_points > 0 ? o.coarse_points : constants.points,
+  std::printf("\nfoot %s, f_mech (positive-power band %g W), P = %d (multistarts at P = %d first), %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n",
+              foot_name.c_str(), po.positive_power_band, constants.points, o.coarse_points > 0 ? o.coarse_points : constants.points,
               rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
-  std::printf("continuation: %s predictor, predictor Hessian %s\n", to_string(o.continuation.predictor),
-              predictor_hessian_name(o.continuation.reuse_predictor_hessian));
+  std::printf("continuation: %s predictor, predictor Hessian %s; dominance tests' R2 with %d perturbations\n",
+              to_string(o.continuation.predictor), predictor_hessian_name(o.continuation.reuse_predictor_hessian),
+              o.dominance_starts > 0 ? o.dominance_starts : o.starts);
   // Idle estimate: the multistarts use both cores, the continuation runs one.
   const double cpu = bench::cpu_seconds() - cpu_at_start;
   std::printf("wall time %.1f s (multistart %.1f s for %d solves, recovery %.1f s), %s at the end\n", r.seconds,

@@ -83,10 +83,10 @@ struct SpeedSweepOptions {
   // coarse grid may lack the gait); where coarse solves reached feasible gaits but no KKT point,
   // solving the starts again at P found none either (P2-shoes HMT at 0.3 m/s: 0/20 in 14 s; the
   // rho 10 low-speed design of the foot design study: 0/20 in 59 s CPU). 0, or >= the model's P:
-  // every start at the model's P. Measured on
-  // this 2-core machine (bench/results/speed_sweep_bench.txt): point feet the same optima at all 21
-  // speeds in 29.6 instead of 41.7 s; P2-shoes HMT (with R2 after a failed dominance R1) every speed
-  // as good or better (2.3 m/s f_mech 0.0427 instead of 0.0497) in the same time.
+  // every start at the model's P. Measured on this 2-core machine
+  // (bench/results/speed_sweep_bench.txt): point feet the same optima at all 21 speeds in 29.6
+  // instead of 41.7 s; P2-shoes HMT (with R2 after a failed dominance R1) every speed as good or
+  // better (2.3 m/s f_mech 0.0427 instead of 0.0497) in the same time.
   int coarse_points = 100;
   std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
