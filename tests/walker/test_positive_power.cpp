@@ -96,6 +96,8 @@ TEST(PositivePower, TheBandLetsTheSqpReachAKktPointOnTheLargeRollingFoot) {
   po.positive_power_band = 0.0;
   const nlp::SolverSummary seed_run = optimise_gait(model, po, sqp).summary;  // the case the band is for
   EXPECT_NE(seed_run.termination, nlp::Termination::converged) << "the seed's rule converges here now: pick a harder case";
+  EXPECT_NE(seed_run.message.find(kUnsettledKinkHint), std::string::npos) << seed_run.message;  // what to do about it
+  EXPECT_EQ(rounded_run.message.find(kUnsettledKinkHint), std::string::npos);
 }
 
 TEST(PositivePower, GaitProblemRejectsABandOutsideItsRange) {

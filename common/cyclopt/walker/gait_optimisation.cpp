@@ -14,6 +14,12 @@ GaitOptimum optimise_gait(const WalkerModel<double>& model, const GaitProblemOpt
   nlp::Evaluation e0;
   if (problem.evaluate(z0, false, e0).ok) out.start_objective = e0.objective;
   out.summary = nlp::solve(problem, solver, z0);
+  // A feasible f_mech run that did not pass the KKT test usually sits at the kink of (5.100) where
+  // the gait holds a joint still (positive_power.hpp): say what lets the test settle.
+  const bool feasible_unsettled = !out.summary.success() && out.summary.termination != nlp::Termination::user_stop &&
+                                  out.summary.constraint_violation <= 1e-6;
+  if (feasible_unsettled && options.objective == Objective::mechanical && options.positive_power_band == 0.0)
+    out.summary.message += kUnsettledKinkHint;
   out.z = out.summary.x.size() == z0.size() ? out.summary.x : z0;
   out.model = problem.model_at(out.z);
   out.gait = problem.gait_at(out.z);

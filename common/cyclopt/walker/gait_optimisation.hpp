@@ -20,6 +20,12 @@ struct GaitOptimum {
   double start_objective = 0.0;
 };
 
+// Appended to the summary's message of a feasible f_mech solve with the seed's positive part that
+// ended without a KKT point.
+inline constexpr const char* kUnsettledKinkHint =
+    "; feasible but not a KKT point: if the gait holds a joint still, it sits at the kink of max(u q_dot, 0) (5.100), "
+    "where the KKT test cannot settle - \"positive_power_band\": 1e-3 (W) rounds that kink";
+
 // Solves from `start` (gait parameters x) or, if absent, from the automatic starting gait at
 // options.speed. Throws std::runtime_error when no starting gait exists.
 GaitOptimum optimise_gait(const WalkerModel<double>& model, const GaitProblemOptions& options,
