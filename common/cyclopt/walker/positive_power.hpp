@@ -14,7 +14,7 @@
 // positive work, the gradient there is one-sided, and the SQP's KKT test does not settle (runs crawl
 // at KKT errors 1e-2..1, bench/results/walker_solvers.txt). Rounded, that minimum is smooth. The
 // error is at most e/4 per joint where |p| < e: for a joint still over the whole step
-// e / (4 m g v_bar) in f_mech (e = 1 mW, 70 kg, 0.3 m/s: 1.2e-6, against f_mech ~ 5e-3).
+// e / (4 m g v_bar) in f_mech (e = 1 mW, m = 80.16 kg, 0.3 m/s: 1.1e-6, against f_mech ~ 5e-3).
 
 #include "cyclopt/autodiff/scalar.hpp"
 
