@@ -145,7 +145,10 @@ int main(int argc, char** argv) {
   walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
   if (argc > 6) problem.positive_power_band = std::atof(argv[6]);
   std::printf("foot_design_bench on %s\n", bench::machine_line().c_str());
-
+  std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep"
+              " (%d in its dominance tests), positive-power band %g W\n",
+              o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts,
+              o.sweep.dominance_starts > 0 ? o.sweep.dominance_starts : o.sweep.starts, problem.positive_power_band);
   // Each result is printed as soon as it is known, so a long list leaves every finished density.
   const std::size_t n = o.sweep.speeds.size();
   studies::FootSweepSummary start_foot, point_feet;
@@ -173,10 +176,6 @@ int main(int argc, char** argv) {
     }
     return true;
   };
-  std::printf("start foot P2-shoes-left-HMT, design speed %.2f m/s, %d design starts, %zu speeds, %d starts per sweep"
-              " (%d in its dominance tests), positive-power band %g W\n",
-              o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts,
-              o.sweep.dominance_starts > 0 ? o.sweep.dominance_starts : o.sweep.starts, problem.positive_power_band);
   const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
   studies::FootDesignResult r;
   try {
