@@ -87,6 +87,21 @@ TEST(CurveJump, SecantFarAboveThePreviousOneIsAJump) {
   EXPECT_FALSE(test_jump(a, near, 0.1, std::nullopt, o).jump);
 }
 
+TEST(CurveJump, SameOptimumNearbyIsCloserThanAJumpWithinTheSmallestStep) {
+  const ContinuationOptions o;  // Delta_min 0.002, jump_min_distance 0.02
+  const Eigen::VectorXd a = Eigen::VectorXd::Constant(4, 1.0);  // |a|_2 = 2
+  Eigen::VectorXd close = a, apart = a;
+  close[0] += 0.009;  // relative 0.0045 < 0.02 / 4
+  apart[0] += 0.011;  // relative 0.0055
+  EXPECT_TRUE(same_optimum_nearby(1.0, close, 1.0015, a, o));
+  EXPECT_FALSE(same_optimum_nearby(1.0, apart, 1.0015, a, o));
+  EXPECT_FALSE(same_optimum_nearby(1.0, close, 1.0025, a, o));  // farther than Delta_min in p
+  ContinuationOptions exact = o;
+  exact.jump_min_distance = 0.0;
+  EXPECT_FALSE(same_optimum_nearby(1.0, close, 1.0, a, exact));
+  EXPECT_TRUE(same_optimum_nearby(1.0, a, 1.0, a, exact));
+}
+
 TEST(Continuation, HitsEveryRequestedValueExactly) {
   const std::vector<double> grid{0.0, 0.1, 0.2, 0.3};
   const ContinuationResult r = continue_solution(shifted, Eigen::VectorXd::Zero(1), grid, {});

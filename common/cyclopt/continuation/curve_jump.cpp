@@ -18,4 +18,10 @@ JumpTest test_jump(const Eigen::VectorXd& x_old, const Eigen::VectorXd& x_new, d
   return t;
 }
 
+bool same_optimum_nearby(double p_a, const Eigen::VectorXd& x_a, double p_b, const Eigen::VectorXd& x_b,
+                         const ContinuationOptions& o) {
+  return std::abs(p_a - p_b) <= o.min_trust_region &&
+         (x_a - x_b).norm() <= 0.25 * o.jump_min_distance * std::max(1.0, x_b.norm());
+}
+
 }  // namespace cyclopt::continuation

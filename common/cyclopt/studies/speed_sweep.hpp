@@ -7,7 +7,9 @@
 //      extent is known (the seed chose the existence ranges by hand);
 //   4. per grid speed, the best converged point of all curves is selected (by hand in the seed).
 // A run stops where it joins a curve an earlier run followed (a converged point at a grid speed
-// with the same f and x, same_objective / same_x): from there on that run's result is known.
+// with the same f and x, same_objective / same_x): from there on that run's result is known. A curve
+// jumped to next to a converged point of a known curve (continuation::same_optimum_nearby) is not
+// continued back: that would retrace the known curve.
 // Beyond the seed (issue 16), the sweep then recovers every grid speed that no curve reached with a
 // KKT point (a continuation stopped at the minimal step before it, or ended at a fold), and every
 // point that may be dominated (a neighbouring speed's best curve did not reach this speed, so the
