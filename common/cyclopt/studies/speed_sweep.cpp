@@ -98,9 +98,12 @@ class Sweep {
   SpeedSweepResult r_;
   bool stopped_ = false;
   std::vector<bool> seeded_;                    // per grid speed: a gait multistart ran there
-  std::vector<bool> unreached_tried_;           // per grid speed
+  // Per grid speed: the curves there were (r_.curves) when its unreached recovery was last tried,
+  // -1 before any; it is tried again once curves were opened since, from those curves only.
+  std::vector<int> unreached_curves_;
   std::set<std::pair<std::size_t, int>> dominance_tried_;  // (grid speed, neighbour's curve)
   std::map<std::size_t, std::string> failures_;  // per grid speed: what recovery tried
+  std::map<std::size_t, std::string> tried_from_;  // per grid speed: the R1 starts of its tries
   int batches_ = 0;                             // multistart batches begun (journal keys)
   int runs_begun_ = 0;                          // continuation runs begun (journal keys)
 
@@ -112,7 +115,7 @@ class Sweep {
   int computed_solves_ = 0;                     // multistart solves finished in this attempt (not resumed)
   Clock::time_point batch_start_;
   double continuation_wall_ = 0.0;              // of finished runs
-  int recoveries_left_ = 0;                     // unreached speeds not tried yet (in recovery)
+  int recoveries_left_ = 0;                     // unreached speeds with curves not tried yet (in recovery)
 };
 
 void Sweep::begin_phase(SweepPhase phase, std::string detail, int total) {
@@ -384,7 +387,7 @@ std::optional<Target> Sweep::next_target() {
   std::optional<Target> best;
   std::size_t best_distance = n;
   for (std::size_t i = 0; i < n; ++i) {
-    if (r_.best[i].found || unreached_tried_[i]) continue;
+    if (r_.best[i].found || unreached_curves_[i] >= r_.curves) continue;
     std::size_t distance = n;
     for (std::size_t j = 0; j < n; ++j)
       if (r_.best[j].found) distance = std::min(distance, i > j ? i - j : j - i);
@@ -394,11 +397,13 @@ std::optional<Target> Sweep::next_target() {
     }
   }
   if (best) {
-    // R1 starts: every curve's converged point nearest in speed to the target.
+    // R1 starts: the converged point nearest in speed to the target of every curve not tried there.
     const double v = o_.speeds[best->index];
+    const int first_curve = std::max(0, unreached_curves_[best->index]);
     std::map<int, const CurvePoint*> nearest;
     for (const ContinuationResult& run : r_.runs)
       for (const CurvePoint& p : run.points) {
+        if (p.curve_id < first_curve) continue;
         const CurvePoint*& q = nearest[p.curve_id];
         if (p.converged && (!q || std::abs(p.parameter - v) < std::abs(q->parameter - v))) q = &p;
       }
@@ -430,13 +435,14 @@ void Sweep::recover(const Target& target) {
   const Clock::time_point t0 = Clock::now();
   const double v = o_.speeds[target.index];
   recoveries_left_ = 0;
-  for (std::size_t i = 0; i < o_.speeds.size(); ++i) recoveries_left_ += !r_.best[i].found && !unreached_tried_[i];
+  for (std::size_t i = 0; i < o_.speeds.size(); ++i) recoveries_left_ += !r_.best[i].found && unreached_curves_[i] < r_.curves;
   char detail[64];
   std::snprintf(detail, sizeof detail, "at %.4g m/s (%s)", v, target.unreached ? "unreached" : "dominated?");
   begin_phase(SweepPhase::recovery, detail, -1);
   RecoveryAttempt a;
   a.speed = v;
-  a.trigger = target.unreached ? "unreached"
+  const bool retry = target.unreached && unreached_curves_[target.index] >= 0;
+  a.trigger = target.unreached ? (retry ? "unreached, again from curves opened since" : "unreached")
                                : "dominated? curve " + std::to_string(target.seeds.front()->curve_id) + " is best at " +
                                      std::to_string(target.seeds.front()->parameter) + " m/s";
   // A recovered point must beat the selected one (if any) by more than same_objective.
@@ -490,7 +496,7 @@ void Sweep::recover(const Target& target) {
       found = true;
     }
   }
-  if (target.unreached) unreached_tried_[target.index] = true;
+  if (target.unreached) unreached_curves_[target.index] = r_.curves;
   if (found && r_.curves < o_.max_curves) {
     a.found = true;
     a.objective = f;
@@ -498,10 +504,12 @@ void Sweep::recover(const Target& target) {
     std::deque<Task> queue{{*x, v, 1.0, id, true, true}, {*x, v, -1.0, id, false, true}};
     run_queue(queue);
   } else if (target.unreached) {
+    std::string& from = tried_from_[target.index];
+    from += (from.empty() || curves.empty() ? "" : ", ") + curves;
     failures_[target.index] =
         found ? "a KKT point was found by recovery but max_curves (" + std::to_string(o_.max_curves) + ") curves are in use"
               : "no KKT point: continuation did not reach this speed; R1 solves here from the nearest points of curves (" +
-                    curves + " m/s), R2 " + std::to_string(o_.starts) +
+                    from + " m/s), R2 " + std::to_string(o_.starts) +
                     " perturbations of them and the starting-gait multistart here found none; more starts (starts), "
                     "another seed or a smaller continuation.min_trust_region may help";
   }
@@ -531,7 +539,7 @@ SpeedSweepResult Sweep::run() {
   const Clock::time_point start = Clock::now();
   const std::size_t n = o_.speeds.size();
   seeded_.assign(n, false);
-  unreached_tried_.assign(n, false);
+  unreached_curves_.assign(n, -1);
   reached_.assign(n, false);
   progress_.speeds_total = static_cast<int>(n);
   std::vector<std::size_t> seeds;  // distinct grid indices nearest to the seed speeds

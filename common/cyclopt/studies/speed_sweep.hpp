@@ -25,8 +25,9 @@
 // A recovered point better than what the speed had opens a new curve, continued with QPSQP in
 // both directions while it is the best known (a run stops at the first grid speed where another
 // curve is at least as good), so it fills the neighbouring gaps too. Targets nearest to a reached
-// speed go first; each target and each (speed, neighbour curve) pair is tried once, so the
-// recovery ends. A speed still without a point gets a reason naming what was tried and which
+// speed go first; an unreached speed is tried again whenever curves were opened since its last try
+// (R1 and R2 from those curves only: a later recovery's curve may pass nearer to it), each (speed,
+// neighbour curve) pair of a dominance test once, so the recovery ends (max_curves). A speed still without a point gets a reason naming what was tried and which
 // options to change. BestPoint::step tells which step found the curve through the selected point.
 // Before step 1, known gaits (options.known_gaits: a gait the caller solved at a grid speed, such as
 // a foot design's optimum, section 10.2) are solved from and continued in both directions like a
@@ -126,7 +127,7 @@ std::string describe(const BestPoint& best);
 // One recovery target and what was tried there.
 struct RecoveryAttempt {
   double speed = 0.0;
-  std::string trigger;  // "unreached" or "dominated? curve c is best at v m/s"
+  std::string trigger;  // "unreached" (", again from curves opened since") or "dominated? curve c is best at v m/s"
   int solves = 0;       // R1-R3 local solves spent
   bool found = false;   // a better KKT point than the speed had
   SweepStep step = SweepStep::neighbour_start;  // that found it (when found)
