@@ -7,7 +7,8 @@
 //   options (integer, number or string, recognised in that order); the word difference_hessian
 //   sets SqpOptions::difference_hessian, difference_start IpoptOptions::difference_hessian_start, refresh=K
 //   difference_hessian_every = K of both solvers, band=W the positive_power_band of f_mech (W), the word
-//   lbfgs Ipopt's limited-memory Hessian instead of the adapter's damped BFGS, the word f_usq the objective (5.101) instead of f_mech (5.102), the word verbose one line per iteration.
+//   lbfgs Ipopt's limited-memory Hessian instead of the adapter's damped BFGS, the word f_usq the
+//   objective (5.101) instead of f_mech (5.102), the word verbose one line per iteration.
 #include "bench_foot.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"

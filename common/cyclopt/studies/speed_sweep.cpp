@@ -77,6 +77,8 @@ class Sweep {
   void continue_new_optimum(double v, const std::optional<Eigen::VectorXd>& x, SweepStep step);
   bool on_known_curve(double v, const Eigen::VectorXd& x, double f) const;
   bool near_known_curve(const CurvePoint& p) const;
+  // Grid speed i has no point and curves were opened since its last unreached recovery (or none ran).
+  bool unreached_to_try(std::size_t i) const { return !r_.best[i].found && unreached_curves_[i] < r_.curves; }
   const CurvePoint* best_at(double v) const;
   int open_curve(const CurveOrigin& origin);
   void run_queue(std::deque<Task>& queue);
@@ -387,7 +389,7 @@ std::optional<Target> Sweep::next_target() {
   std::optional<Target> best;
   std::size_t best_distance = n;
   for (std::size_t i = 0; i < n; ++i) {
-    if (r_.best[i].found || unreached_curves_[i] >= r_.curves) continue;
+    if (!unreached_to_try(i)) continue;
     std::size_t distance = n;
     for (std::size_t j = 0; j < n; ++j)
       if (r_.best[j].found) distance = std::min(distance, i > j ? i - j : j - i);
@@ -435,7 +437,7 @@ void Sweep::recover(const Target& target) {
   const Clock::time_point t0 = Clock::now();
   const double v = o_.speeds[target.index];
   recoveries_left_ = 0;
-  for (std::size_t i = 0; i < o_.speeds.size(); ++i) recoveries_left_ += !r_.best[i].found && unreached_curves_[i] < r_.curves;
+  for (std::size_t i = 0; i < o_.speeds.size(); ++i) recoveries_left_ += unreached_to_try(i);
   char detail[64];
   std::snprintf(detail, sizeof detail, "at %.4g m/s (%s)", v, target.unreached ? "unreached" : "dominated?");
   begin_phase(SweepPhase::recovery, detail, -1);

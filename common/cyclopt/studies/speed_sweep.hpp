@@ -27,8 +27,9 @@
 // curve is at least as good), so it fills the neighbouring gaps too. Targets nearest to a reached
 // speed go first; an unreached speed is tried again whenever curves were opened since its last try
 // (R1 and R2 from those curves only: a later recovery's curve may pass nearer to it), each (speed,
-// neighbour curve) pair of a dominance test once, so the recovery ends (max_curves). A speed still without a point gets a reason naming what was tried and which
-// options to change. BestPoint::step tells which step found the curve through the selected point.
+// neighbour curve) pair of a dominance test once, so the recovery ends (max_curves). A speed still
+// without a point gets a reason naming what was tried and which options to change.
+// BestPoint::step tells which step found the curve through the selected point.
 // Before step 1, known gaits (options.known_gaits: a gait the caller solved at a grid speed, such as
 // a foot design's optimum, section 10.2) are solved from and continued in both directions like a
 // seed optimum; the seed multistarts follow and add what they find off those curves.
