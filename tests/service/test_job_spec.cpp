@@ -5,6 +5,7 @@
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
+#include "cyclopt/service/walker_job_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -144,6 +145,23 @@ TEST(JobSpec, ErrorsNameTheField) {
   const std::string deep = "{\"scene\": \"walker\", \"task\": \"foot_sweep\", \"foot\": " + std::string(7000, '[') +
                            std::string(7000, ']') + "}";
   EXPECT_EQ(failing_field([&] { validate_job_spec(parse_job_spec_text(deep), builtin_job_kinds()); }), "foot");
+}
+
+// An Ipopt job that names no band gets kIpoptPositivePowerBand (the interior-point method needs the
+// kink of max(u q_dot, 0) rounded); the SQP and the corrected rule keep the seed's positive part.
+TEST(JobSpec, AnIpoptJobRoundsThePositivePartUnlessTheSpecSaysOtherwise) {
+  const auto band = [](const nlohmann::json& extra) {
+    nlohmann::json spec = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.3}};
+    spec.update(extra);
+    return parse_walker_job(spec, false).problem.positive_power_band;
+  };
+  const nlohmann::json ipopt = {{"solver", "ipopt"}};
+  EXPECT_EQ(band(nlohmann::json::object()), 0.0);
+  EXPECT_EQ(band({{"solver", {{"solver", "sqp"}}}}), 0.0);
+  EXPECT_EQ(band({{"solver", ipopt}}), kIpoptPositivePowerBand);
+  EXPECT_EQ(band({{"solver", ipopt}, {"quadrature", "corrected_trapezoid"}}), 0.0);
+  EXPECT_EQ(band({{"solver", ipopt}, {"positive_power_band", 0.0}}), 0.0);
+  EXPECT_EQ(band({{"solver", ipopt}, {"positive_power_band", 0.25}}), 0.25);
 }
 
 TEST(JobSpec, LimitsAreCappedByTheServer) {

@@ -46,9 +46,12 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
                                      "trapezoid"
                                  ? walker::Quadrature::trapezoid
                                  : walker::Quadrature::corrected_trapezoid;
+  job.solver = common.solver.applied_to(nlp::seed_table_6_2_options());  // the seed's SQP by default
+  const bool trapezoid = job.problem.quadrature == walker::Quadrature::trapezoid;
+  const bool ipopt = job.solver.solver == nlp::SolverKind::ipopt;
   job.problem.positive_power_band = optional_number(spec, "", "positive_power_band", 0.0, walker::kMaxPositivePowerBand)
-                                        .value_or(job.problem.positive_power_band);
-  if (job.problem.positive_power_band > 0.0 && job.problem.quadrature != walker::Quadrature::trapezoid)
+                                        .value_or(ipopt && trapezoid ? kIpoptPositivePowerBand : 0.0);
+  if (job.problem.positive_power_band > 0.0 && !trapezoid)
     throw SpecError("positive_power_band", "> 0 needs \"quadrature\": \"trapezoid\"");
   const walker::WalkerModel<double> model = job.model();
   if (spec.contains("free_parameters")) {
@@ -81,7 +84,6 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
     job.seed = static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1));
     job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
   }
-  job.solver = common.solver.applied_to(nlp::seed_table_6_2_options());  // the seed's SQP by default
   return job;
 }
 
