@@ -18,6 +18,7 @@
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/foot_design.hpp"
 #include "machine_info.hpp"
+#include "recovery_lines.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -78,6 +79,7 @@ void print_sweep(const studies::FootSweepSummary& s, const walker::WalkerModel<d
               s.speeds_found ? sum / s.speeds_found : std::nan(""), s.seconds);
   for (double f : s.f_mech) std::printf(" %.4f", f);
   std::printf("\n");
+  bench::print_recoveries(s.recoveries, "    ");
 }
 
 // The foot's parameters on the current line: "name value" per parameter of its layout.

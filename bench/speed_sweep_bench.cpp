@@ -18,6 +18,7 @@
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 #include "machine_info.hpp"
+#include "recovery_lines.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -84,13 +85,7 @@ int main(int argc, char** argv) {
       std::printf("  jump curve %d -> %d between v = %.4f and %.4f: f %.6f -> %.6f\n", j.from_curve, j.to_curve,
                   j.from_parameter, j.to_parameter, j.objective_before, j.objective_after);
   }
-  for (const RecoveryAttempt& a : r.recoveries) {
-    std::printf("recovery at %.1f m/s (%s): %d solves, %.1f s, ", a.speed, a.trigger.c_str(), a.solves, a.seconds);
-    if (a.found)
-      std::printf("%s found f_mech %.6f\n", to_string(a.step), a.objective);
-    else
-      std::printf("nothing better\n");
-  }
+  bench::print_recoveries(r.recoveries);
   std::printf("\nbest per speed:\n");
   int found = 0;
   for (const BestPoint& b : r.best) {

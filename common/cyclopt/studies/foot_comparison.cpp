@@ -38,6 +38,7 @@ FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerMo
   s.best = sweep.best;
   s.seconds = sweep.seconds;
   s.curves = sweep.curves;
+  s.recoveries = sweep.recoveries;
   for (const BestPoint& b : sweep.best) {
     double f = kNaN;
     if (b.found) {

@@ -30,6 +30,7 @@ struct FootSweepSummary {
   double saving = 0.0;                 // against the reference, over the same speeds (0 for the reference)
   double seconds = 0.0;                // wall time of its sweep
   int curves = 0;
+  std::vector<RecoveryAttempt> recoveries;  // the sweep's, in the order tried
   bool stopped = false;                // sweep_foot's on_point asked to stop during its sweep
 };
 
