@@ -96,8 +96,9 @@ void print_density(const studies::DensityDesign& d, int starts, std::size_t n, c
               d.density, d.kkt_starts, starts, d.optima.size(), d.class_counts[0], d.class_counts[1], d.class_counts[2],
               d.class_counts[3], d.class_counts[4]);
   for (std::size_t k = 0; k < d.runs.size(); ++k)
-    std::printf("  start %2zu: %-18s %5d iterations %6.1f s  f %.5f\n", k, nlp::to_string(d.runs[k].termination),
-                d.runs[k].iterations, d.runs[k].seconds, d.runs[k].objective);
+    std::printf("  start %2zu: %-18s %5d iterations %6d evaluations %6.1f s  f %.5f\n", k,
+                nlp::to_string(d.runs[k].termination), d.runs[k].iterations, d.runs[k].evaluations, d.runs[k].seconds,
+                d.runs[k].objective);
   for (std::size_t k = 0; k < d.optima.size(); ++k) {
     const studies::DesignOptimum& m = d.optima[k];
     std::printf("  optimum %zu: f %.5f, %s (%s)\n", k, m.objective, studies::to_string(m.classification.design_class),

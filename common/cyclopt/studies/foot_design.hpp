@@ -105,6 +105,7 @@ struct DesignOptimum {
 struct DesignRun {
   nlp::Termination termination = nlp::Termination::numerical_failure;
   int iterations = 0;
+  int evaluations = 0;  // of the problem, with and without derivatives
   double seconds = 0.0;
   double objective = 0.0;
 };
