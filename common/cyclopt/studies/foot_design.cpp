@@ -325,8 +325,9 @@ DensityDesign DesignStudy::at(double rho) {
       [&] { return std::make_unique<walker::GaitProblem>(model, po); },
       [&](std::mt19937_64& rng) { return design_start(start, po, centre, rng); }, mo);
   d.kkt_starts = r.successes;
-  for (const nlp::SolverSummary& run : r.runs) d.runs.push_back({run.termination, run.iterations, run.function_evaluations + run.jacobian_evaluations,
-                                                             run.wall_seconds, run.objective});
+  for (const nlp::SolverSummary& run : r.runs)
+    d.runs.push_back({run.termination, run.iterations, run.function_evaluations + run.jacobian_evaluations, run.wall_seconds,
+                      run.objective});
   for (const nlp::MultistartOptimum& m : r.optima) {
     d.optima.push_back(optimum(shape, rho, m, r.runs));
     const DesignClass c = d.optima.back().classification.design_class;
