@@ -50,7 +50,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
   const bool trapezoid = job.problem.quadrature == walker::Quadrature::trapezoid;
   const bool ipopt = job.solver.solver == nlp::SolverKind::ipopt;
   job.problem.positive_power_band = optional_number(spec, "", "positive_power_band", 0.0, walker::kMaxPositivePowerBand)
-                                        .value_or(ipopt && trapezoid ? kIpoptPositivePowerBand : 0.0);
+                                        .value_or(ipopt && trapezoid ? kIpoptPositivePowerBand : job.problem.positive_power_band);
   if (job.problem.positive_power_band > 0.0 && !trapezoid)
     throw SpecError("positive_power_band", "> 0 needs \"quadrature\": \"trapezoid\"");
   const walker::WalkerModel<double> model = job.model();
