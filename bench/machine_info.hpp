@@ -1,8 +1,11 @@
 #pragma once
 // What a benchmark ran on: printed at the top of every committed results table.
 
+#include "cyclopt/nlp/spare_core.hpp"
+
 #include <sys/resource.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -17,8 +20,20 @@ inline std::string cpu_model() {
   return "unknown CPU";
 }
 
+// CYCLOPT_SPARE_CORES=never (or always) sets nlp::SpareCoreRule for the benchmark, to measure what
+// the helper threads of nlp/spare_core.hpp gain; the line names the rule in force.
+inline std::string spare_core_rule_from_environment() {
+  const char* rule = std::getenv("CYCLOPT_SPARE_CORES");
+  const std::string name = rule ? rule : "measured";
+  if (name == "never") nlp::set_spare_core_rule(nlp::SpareCoreRule::never);
+  else if (name == "always") nlp::set_spare_core_rule(nlp::SpareCoreRule::always);
+  else return "spare cores measured";
+  return "spare cores " + name + " (CYCLOPT_SPARE_CORES)";
+}
+
 inline std::string machine_line() {
-  return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+  return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads, " +
+         spare_core_rule_from_environment();
 }
 
 // The machine is shared: every timing is printed with the load average (1, 5, 15 min) beside it.

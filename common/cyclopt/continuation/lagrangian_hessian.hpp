@@ -2,7 +2,8 @@
 // The Hessian of the Lagrangian (seed 001, eq. 6.23) by forward differences of the exact (AD)
 // Lagrangian gradient, for the QP predictor's W = clamped Hessian (6.24) of Algorithm 2 steps 3
 // and 7. The seed uses the complex step; the walker's gradients are exact dual-number
-// derivatives, so one difference per variable costs n + 1 Jacobian evaluations.
+// derivatives, so one difference per variable costs n + 1 Jacobian evaluations (on two threads
+// when a core is spare, nlp/parallel_columns.hpp).
 #include "cyclopt/nlp/problem.hpp"
 #include <Eigen/Core>
 #include <optional>

@@ -34,6 +34,12 @@ const EvaluationStatus& CachedEvaluator::evaluate(const Eigen::VectorXd& x, bool
   return status_;
 }
 
+void CachedEvaluator::add_counts(const SolverSummary& helper) {
+  counts_.function_evaluations += helper.function_evaluations;
+  counts_.jacobian_evaluations += helper.jacobian_evaluations;
+  counts_.failed_evaluations += helper.failed_evaluations;
+}
+
 void CachedEvaluator::check_sizes(bool with_derivatives) const {
   const Eigen::Index n = problem_.num_variables(), m_eq = problem_.num_equalities(), m_in = problem_.num_inequalities();
   auto require = [](bool ok, const std::string& what) {

@@ -27,6 +27,9 @@ class CachedEvaluator {
   const EvaluationStatus& evaluate(const Eigen::VectorXd& x, bool with_derivatives);
   const Evaluation& evaluation() const { return evaluation_; }  // of the last evaluate()
   bool stopped() const { return stopped_; }  // should_stop refused an evaluation
+  Problem& problem() const { return problem_; }
+  // Adds the evaluations a helper evaluator made on a copy of the problem (parallel_columns.hpp).
+  void add_counts(const SolverSummary& helper);
 
  private:
   void check_sizes(bool with_derivatives) const;

@@ -1,6 +1,7 @@
 #include "cyclopt/nlp/difference_hessian.hpp"
 
 #include "cyclopt/nlp/kkt_measures.hpp"
+#include "cyclopt/nlp/parallel_columns.hpp"
 
 #include <cmath>
 #include <limits>
@@ -20,19 +21,18 @@ std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator
   };
   const Eigen::VectorXd base = gradient(at);
   Eigen::MatrixXd H(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
+  const bool all_columns = for_each_column(evaluator, static_cast<int>(n), [&](int j, CachedEvaluator& ev) {
     const double h = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[j]));
-    bool done = false;
     for (double side : {1.0, -1.0}) {
       Eigen::VectorXd xh = x;
       xh[j] += side * h;
-      if (!evaluator.evaluate(xh, true).ok) continue;
-      H.col(j) = (gradient(evaluator.evaluation()) - base) / (side * h);
-      done = true;
-      break;
+      if (!ev.evaluate(xh, true).ok) continue;
+      H.col(j) = (gradient(ev.evaluation()) - base) / (side * h);
+      return true;
     }
-    if (!done) return std::nullopt;
-  }
+    return false;
+  });
+  if (!all_columns) return std::nullopt;
   return Eigen::MatrixXd(0.5 * (H + H.transpose()));
 }
 

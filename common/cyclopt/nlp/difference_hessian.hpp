@@ -4,6 +4,7 @@
 // evaluations with derivatives, symmetrised. A point x + h e_j without a real solution is
 // replaced by x - h e_j (the seed's "no real solution" rule). objective_factor sigma weights f in
 // L = sigma f + y_eq' c_eq + y_in' c_in (Ipopt's eval_h asks for sigma = 0 in its restoration phase).
+// The columns run on two threads when a core is spare (parallel_columns.hpp).
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
 

@@ -12,6 +12,8 @@ Eigen::VectorXd Problem::upper_bounds() const {
   return Eigen::VectorXd::Constant(num_variables(), std::numeric_limits<double>::infinity());
 }
 
+std::unique_ptr<Problem> Problem::clone() const { return nullptr; }
+
 std::string Problem::variable_name(int i) const { return "x[" + std::to_string(i) + "]"; }
 
 std::string Problem::constraint_name(bool equality, int i) const {

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 
 namespace cyclopt::nlp {
@@ -43,6 +44,9 @@ class Problem {
   virtual Eigen::VectorXd upper_bounds() const;
   // Evaluates at x; derivatives only if with_derivatives. On failure `out` is unspecified.
   virtual EvaluationStatus evaluate(const Eigen::VectorXd& x, bool with_derivatives, Evaluation& out) = 0;
+  // An independent copy for evaluations in another thread (parallel_columns.hpp), or nullptr
+  // (the default) where the problem cannot be copied: its evaluations then stay in one thread.
+  virtual std::unique_ptr<Problem> clone() const;
   // Optional human-readable names (for reports); default "x[i]", "c_eq[i]", "c_in[i]".
   virtual std::string variable_name(int i) const;
   virtual std::string constraint_name(bool equality, int i) const;

@@ -15,6 +15,7 @@
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ class GaitProblem : public nlp::Problem {
   Eigen::VectorXd lower_bounds() const override;
   Eigen::VectorXd upper_bounds() const override;
   nlp::EvaluationStatus evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out) override;
+  std::unique_ptr<nlp::Problem> clone() const override { return std::make_unique<GaitProblem>(*this); }
   std::string variable_name(int i) const override;
   std::string constraint_name(bool equality, int i) const override;
 
