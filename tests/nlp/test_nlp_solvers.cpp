@@ -144,6 +144,27 @@ TEST(IncompatibleSubproblem, SqpRecoversThroughTheL1Relaxation) {
   }
 }
 
+// SqpOptions::max_qp_iterations: the SQP counts its subproblems' active-set iterations and ends at
+// max_iterations once they exceed the budget; without a budget the same run converges.
+TEST(QpIterationBudget, TheSqpStopsOnceItsSubproblemsHaveTakenTheBudget) {
+  using P = cyclopt::nlp::testing::AutodiffProblem<CircleAndLine>;
+  SolverOptions o = options_for(SolverKind::sqp);
+  P free_run;
+  const SolverSummary unlimited = solve(free_run, o, vec({2, 2}));
+  ASSERT_TRUE(unlimited.success()) << unlimited.message;
+  ASSERT_GE(unlimited.qp_iterations, 2) << "the premise: the run's QPs take more than one active-set iteration";
+  o.sqp.max_qp_iterations = 1;
+  P budgeted;
+  const SolverSummary stopped = solve(budgeted, o, vec({2, 2}));
+  EXPECT_EQ(stopped.termination, Termination::max_iterations);
+  EXPECT_NE(stopped.message.find("MaxQpIter"), std::string::npos) << stopped.message;
+  EXPECT_GT(stopped.qp_iterations, 1);
+  EXPECT_LT(stopped.iterations, unlimited.iterations);
+  o.sqp.max_qp_iterations = -1;
+  P invalid;
+  EXPECT_THROW(solve(invalid, o, vec({2, 2})), std::invalid_argument);
+}
+
 // Inconsistent constraints x1 >= 1 and x1^2 <= 1/4: the violation max(0, 1 - x1) + max(0, x1^2 - 1/4)
 // is stationary at x1 = 1/2, where the SQP stops (Algorithm 1, step 5); Ipopt reports infeasible.
 struct Inconsistent {

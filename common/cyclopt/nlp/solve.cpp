@@ -30,6 +30,7 @@ SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options
     again.function_evaluations += run.function_evaluations;
     again.jacobian_evaluations += run.jacobian_evaluations;
     again.failed_evaluations += run.failed_evaluations;
+    again.qp_iterations += run.qp_iterations;
     again.wall_seconds += run.wall_seconds;
     again.message += " (restart " + std::to_string(k) + " after: " + run.message + ")";
     run = std::move(again);

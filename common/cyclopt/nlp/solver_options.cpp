@@ -73,6 +73,7 @@ void validate(const SolverOptions& o) {
   require(s.max_backtracking_steps >= 1, "sqp.max_backtracking_steps", ">= 1");
   require(s.difference_hessian_every >= 0, "sqp.difference_hessian_every", ">= 0 (0: never)");
   require(s.progress_window >= 0, "sqp.progress_window", ">= 0 (0: never)");
+  require(s.max_qp_iterations >= 0, "sqp.max_qp_iterations", ">= 0 (0: never)");
   require(s.progress_min_decrease > 0 && s.progress_min_decrease < 1, "sqp.progress_min_decrease", "in (0, 1)");
 }
 

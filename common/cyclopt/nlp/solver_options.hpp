@@ -74,6 +74,7 @@ struct SolverSummary {
   int function_evaluations = 0;  // evaluations without derivatives
   int jacobian_evaluations = 0;  // evaluations with derivatives
   int failed_evaluations = 0;    // evaluations that returned !ok
+  int qp_iterations = 0;         // SQP: active-set iterations of all its QP subproblems (Ipopt: 0)
   double wall_seconds = 0.0;
   double objective = 0.0;
   double kkt_error = 0.0;

@@ -52,6 +52,12 @@ struct SqpOptions {
   // f_mech for thousands of iterations without reaching a KKT point; 0: never.
   int progress_window = 0;
   double progress_min_decrease = 1e-2;  // in (0, 1)
+  // > 0: the run ends at max_iterations ("MaxQpIter") once the active-set iterations of its QP
+  // subproblems (6.7), (6.13), (6.14) add up to more than this (SolverSummary::qp_iterations; not
+  // in the seed). A count, not a time, so a run ends at the same iterate on any machine. Meant for
+  // runs stuck in the l1-relaxed mode, whose elastic QPs take thousands of active-set iterations
+  // per SQP iteration (walker/distant_start_solver.hpp); 0: never.
+  int max_qp_iterations = 0;
   std::function<Eigen::MatrixXd(const Eigen::VectorXd& x, const Eigen::VectorXd& equality_multipliers,
                                 const Eigen::VectorXd& inequality_multipliers)>
       lagrangian_hessian;

@@ -146,9 +146,13 @@ std::optional<SearchDirection> SqpRun::search_direction() {
     boxed.lower_bounds = boxed.lower_bounds.cwiseMax(-step_bound_);
     boxed.upper_bounds = boxed.upper_bounds.cwiseMin(step_bound_);
     qp = qp::solve_convex(boxed, sqp_.qp, working_set_, sqp_.screening);
+    summary_.qp_iterations += qp.iterations;
     if (qp.status == qp::QpStatus::infeasible) step_bound_ = kInfinity;  // the box, not (6.7), may be incompatible
   }
-  if (!std::isfinite(step_bound_)) qp = qp::solve_convex(subproblem, sqp_.qp, working_set_, sqp_.screening);
+  if (!std::isfinite(step_bound_)) {
+    qp = qp::solve_convex(subproblem, sqp_.qp, working_set_, sqp_.screening);
+    summary_.qp_iterations += qp.iterations;
+  }
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
@@ -172,6 +176,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   // (no active constraint so far) would make the rho-increase futile; mu_1 is used then.
   double mu = sqp_.penalty_increase * (scalar_penalty_ > 0.0 ? scalar_penalty_ : sqp_.initial_penalty);
   const qp::QpSolution lp = solve_l1_feasibility_lp(here(), trust_radius_, sqp_.qp, sqp_.screening);
+  summary_.qp_iterations += lp.iterations;
   // The LP only calibrates the penalty (steps 6/7) and certifies infeasibility (step 5). If it
   // hits the QP iteration limit (degenerate LPs with many slacks), its last point still bounds the
   // achievable decrease from below: use that and skip the certificate (a deviation from the seed).
@@ -191,6 +196,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
   qp::WorkingSet warm;
   for (int k = 0;; ++k) {
     const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, sqp_.screening, warm);
+    summary_.qp_iterations += relaxed.iterations;
     if (relaxed.status != qp::QpStatus::optimal) {
       stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
       return std::nullopt;
@@ -294,6 +300,11 @@ void SqpRun::run(const VectorXd& x0) {
     }
     if (summary_.function_evaluations + summary_.jacobian_evaluations > sqp_.max_function_evaluations) {
       stop(Termination::max_iterations, "MaxFun reached");
+      break;
+    }
+    if (sqp_.max_qp_iterations > 0 && summary_.qp_iterations > sqp_.max_qp_iterations) {
+      stop(Termination::max_iterations, "MaxQpIter reached: " + std::to_string(summary_.qp_iterations) +
+                                            " active-set iterations in the QP subproblems");
       break;
     }
     if (current_.objective < sqp_.objective_limit) {

@@ -20,6 +20,15 @@ inline constexpr int kDistantStartHessianRefresh = 50;
 // the whole 21-speed sweep 512 instead of 1056 s with a 10 % lower mean f_mech.
 inline constexpr int kMultistartProgressWindow = 200;
 
+// SqpOptions::max_qp_iterations of distant_start_solver (not in the seed). The rho 10 foot design
+// multistart (bench/results/foot_design_bench.txt) had one run of 20 stuck in the l1-relaxed mode:
+// 366 of its 466 iterations relaxed, 1.26 million active-set iterations (elastic QPs of up to 154
+// variables, ~3000 iterations per SQP iteration), 146 s of the multistart's 372 s of solves, ending
+// at MaxIter with f 0.598. The other 19 took 170-18695 active-set iterations in all. With this
+// budget that run ends after 149 iterations (38.5 s); the other runs, the design, its sweeps and
+// the study's answer are unchanged, and the multistart takes 144 s instead of 194-215 s.
+inline constexpr int kDistantStartQpIterations = 200000;
+
 // `solver` with the Hessian approximation started from W_1 of (6.24) on the forward-difference
 // Hessian of the Lagrangian, as the seed's SQP (W_1 = I is only its comparison with fmincon), and
 // refreshed the same way every kDistantStartHessianRefresh iterations (not in the seed) - for the
@@ -28,7 +37,8 @@ inline constexpr int kMultistartProgressWindow = 200;
 // update alone crawls for thousands of iterations on rolling feet (P2-shoes HMT at 1.3 m/s: one of
 // 8 perturbed starts at MaxIter, 5547 iterations for 8; with the refresh 8/8 KKT in 1637), and
 // Ipopt reaches a KKT point from the starting gait on HM and HMT feet only with it.
-// hessian_refresh: the period; 0 keeps W_1 only (the design multistart, foot_design.cpp).
+// hessian_refresh: the period; 0 keeps W_1 only (the design multistart, foot_design.cpp). The SQP
+// also stops after kDistantStartQpIterations active-set iterations of its subproblems.
 nlp::SolverOptions distant_start_solver(nlp::SolverOptions solver, int hessian_refresh = kDistantStartHessianRefresh);
 
 }  // namespace cyclopt::walker
