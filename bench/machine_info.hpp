@@ -31,6 +31,7 @@ inline std::string spare_core_rule_from_environment() {
   return "spare cores " + name + " (CYCLOPT_SPARE_CORES)";
 }
 
+// Also applies CYCLOPT_SPARE_CORES (above): every benchmark prints this line.
 inline std::string machine_line() {
   return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads, " +
          spare_core_rule_from_environment();

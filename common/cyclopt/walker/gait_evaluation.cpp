@@ -131,23 +131,24 @@ GaitEvaluation GaitEvaluator::derivatives(const Eigen::VectorXd& x, const GaitOp
   // chunk is the same pass in either thread, so the Jacobian is bitwise the same. (The one pass is
   // not split: two Dual<16> passes differ from it by rounding - Eigen blocks its products by the
   // scalar's size - and a solve's path may follow rounding.)
-  std::string failures[2];
-  bool reals[2] = {true, true};
-  const bool one_pass = !reference && np == 0 && (nx == 20 || nx == 30);
-  const int chunks = one_pass ? 1 : (n + kJacobianChunk - 1) / kJacobianChunk;
-  nlp::split_on_spare_core(chunks, 2, [&](int begin, int end, bool helper) {
-    bool& ok = reals[helper ? 1 : 0];
-    std::string* failure = &failures[helper ? 1 : 0];
-    if (one_pass)
-      ok = nx == 20 ? derivative_pass<24>(model_, basis_, x, parameter_indices, light, 0, n, false, d, failure)
-                    : derivative_pass<32>(model_, basis_, x, parameter_indices, light, 0, n, false, d, failure);
-    else
-      for (int c = begin; c < end && ok; ++c)
-        ok = derivative_pass<kJacobianChunk>(model_, basis_, x, parameter_indices, light, c * kJacobianChunk,
-                                             std::min(kJacobianChunk, n - c * kJacobianChunk), reference, d, failure);
-  });
-  const bool real = reals[0] && reals[1];
-  const std::string& failure = reals[0] ? failures[1] : failures[0];
+  std::string failure;
+  bool real = true;
+  if (!reference && np == 0 && nx == 20) {
+    real = derivative_pass<24>(model_, basis_, x, parameter_indices, light, 0, n, false, d, &failure);
+  } else if (!reference && np == 0 && nx == 30) {
+    real = derivative_pass<32>(model_, basis_, x, parameter_indices, light, 0, n, false, d, &failure);
+  } else {
+    std::string failures[2];  // of this thread's chunks and the helper's
+    bool reals[2] = {true, true};
+    nlp::split_on_spare_core((n + kJacobianChunk - 1) / kJacobianChunk, 2, [&](int begin, int end, bool helper) {
+      for (int c = begin; c < end && reals[helper]; ++c)
+        reals[helper] = derivative_pass<kJacobianChunk>(model_, basis_, x, parameter_indices, light, c * kJacobianChunk,
+                                                        std::min(kJacobianChunk, n - c * kJacobianChunk), reference, d,
+                                                        &failures[helper]);
+    });
+    real = reals[0] && reals[1];
+    failure = reals[0] ? failures[1] : failures[0];  // the first failing chunk's, as in one thread
+  }
   if (!real) {  // treated like a value pass without a gait: the caller backtracks or stops
     out.gait.real = false;
     out.gait.failure = "on the boundary of existence, the derivative pass finds: " + failure;
