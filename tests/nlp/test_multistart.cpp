@@ -151,7 +151,9 @@ TEST(Multistart, KktOnlyRestartsAcceptableRunsAndLeavesOutThoseThatStayAcceptabl
   EXPECT_EQ(strict.successes, 0);
   EXPECT_TRUE(strict.optima.empty());
   EXPECT_TRUE(strict.ranking.empty());
-  EXPECT_NE(strict.runs[0].message.find("restart 2"), std::string::npos) << strict.runs[0].message;
+  // Its solve ended at its start, so a restart would repeat it: none is made (solve_with_restarts).
+  EXPECT_EQ(strict.runs[0].message.find("restart"), std::string::npos) << strict.runs[0].message;
+  EXPECT_EQ(strict.runs[0].iterations, loose.runs[0].iterations);
   // Recorded runs (a resumed multistart) are judged alike: a converged one counts, an acceptable one not.
   SolverSummary kkt = loose.runs[1];
   kkt.termination = Termination::converged;

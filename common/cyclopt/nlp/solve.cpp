@@ -22,10 +22,13 @@ SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options
   if (restarts < 0) throw std::invalid_argument("restarts: must be >= 0");
   if (!(max_violation >= 0.0)) throw std::invalid_argument("max_violation: must be >= 0");
   SolverSummary run = solve(problem, options, x0);
+  Eigen::VectorXd start = x0;  // of the last solve
   for (int k = 1; k <= restarts && !accepted(run, acceptance) && run.termination != Termination::user_stop && run.x.size() > 0 &&
-                  run.x.allFinite() && run.constraint_violation <= max_violation;
+                  run.x.allFinite() && run.constraint_violation <= max_violation &&
+                  (run.x.size() != start.size() || run.x != start);
        ++k) {
-    SolverSummary again = solve(problem, options, run.x);
+    start = run.x;
+    SolverSummary again = solve(problem, options, start);
     again.iterations += run.iterations;
     again.function_evaluations += run.function_evaluations;
     again.jacobian_evaluations += run.jacobian_evaluations;

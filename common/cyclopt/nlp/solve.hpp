@@ -18,7 +18,9 @@ SolverSummary solve(Problem& problem, const SolverOptions& options, const Eigen:
 // solves that stalled near an optimum (MaxFun, no merit decrease, with kkt_only a step below
 // TolStep) the rest of the way. A solve that ends with a constraint violation above
 // max_violation is not solved again: it stopped far from any KKT point, where a fresh Hessian does
-// not help. The summary is the last solve's, with the iterations, evaluations and seconds of all
+// not help. Nor is a solve that ended at its own start (bitwise): a solve is a function of its
+// start, so the restart would repeat it (the rho 10 foot design's start 11 spent 9 s on such a
+// second restart, bench/results/foot_design_bench.txt). The summary is the last solve's, with the iterations, evaluations and seconds of all
 // of them and the earlier stops named in its message. Throws as solve(), and
 // std::invalid_argument for restarts < 0 or max_violation < 0 or NaN.
 SolverSummary solve_with_restarts(Problem& problem, const SolverOptions& options, const Eigen::VectorXd& x0, int restarts,
