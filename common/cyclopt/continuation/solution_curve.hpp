@@ -42,4 +42,19 @@ struct ContinuationResult {
   double seconds = 0.0;
 };
 
+// Gives the curves `run` jumped to - numbered from `from` on, its CurveStart::next_curve_id - the
+// ids from `to` on: for a run computed before the id of its first new curve was known (a sweep's
+// downward run computed beside the upward one, studies/speed_sweep.cpp). Ids below `from` stay.
+inline void renumber_new_curves(ContinuationResult& run, int from, int to) {
+  const auto renumber = [from, to](int& id) {
+    if (id >= from) id = to + (id - from);
+  };
+  for (CurvePoint& p : run.points) renumber(p.curve_id);
+  for (CurveJump& j : run.jumps) {
+    renumber(j.from_curve);
+    renumber(j.to_curve);
+  }
+  renumber(run.next_curve_id);
+}
+
 }  // namespace cyclopt::continuation

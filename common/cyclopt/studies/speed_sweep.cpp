@@ -3,6 +3,7 @@
 #include "cyclopt/studies/walker_family.hpp"
 #include "cyclopt/continuation/curve_jump.hpp"
 #include "cyclopt/nlp/multistart.hpp"
+#include "cyclopt/nlp/spare_core.hpp"
 #include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
@@ -81,8 +82,25 @@ class Sweep {
   bool unreached_to_try(std::size_t i) const { return !r_.best[i].found && unreached_curves_[i] < r_.curves; }
   const CurvePoint* best_at(double v) const;
   int open_curve(const CurveOrigin& origin);
+  // A continuation run of a task as computed, before the sweep takes it in (take_run).
+  struct RunOutcome {
+    ContinuationResult run;
+    int number = 0;                    // journal key (runs_begun_ when it began)
+    int first_new_curve = 0;           // the id it gave its first curve jumped to
+    bool computed = false;             // else taken from the journal
+    std::optional<double> merged;      // it stopped here: it joined an earlier run's curve
+    std::optional<double> superseded;  // a recovery run stopped here: another curve is as good
+  };
   void run_queue(std::deque<Task>& queue);
+  std::vector<double> task_grid(const Task& t) const;  // the task's start speed, then the grid its way
+  bool both_ways(const Task& up, const Task& down) const;
+  std::optional<ContinuationResult> recorded_run(int number) const;
+  // The run of t; its points go to on_point_ as they come, or (deferred) only their indices are collected.
+  RunOutcome compute_run(const Task& t, int number, int next_curve, std::optional<ContinuationResult> recorded,
+                         std::vector<std::size_t>* deferred);
+  void take_run(const Task& t, RunOutcome o, std::deque<Task>& queue);
   void continue_task(const Task& t, std::deque<Task>& queue);
+  void continue_both_ways(const Task& up, const Task& down, std::deque<Task>& queue);
   std::optional<Target> next_target();
   void recover(const Target& target);
   void select_best();
@@ -293,29 +311,45 @@ void Sweep::run_queue(std::deque<Task>& queue) {
   while (!queue.empty() && !stopped_) {
     const Task t = std::move(queue.front());
     queue.pop_front();
-    continue_task(t, queue);
+    if (!queue.empty() && both_ways(t, queue.front()) && nlp::core_is_spare()) {
+      const Task down = std::move(queue.front());
+      queue.pop_front();
+      continue_both_ways(t, down, queue);
+    } else {
+      continue_task(t, queue);
+    }
   }
 }
 
-// Continues one task; queues the backward continuation of every new curve it jumps to.
-void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
+std::vector<double> Sweep::task_grid(const Task& t) const {
   std::vector<double> grid{t.speed};
   for (double v : o_.speeds)
     if ((v - t.speed) * t.direction > 1e-12) grid.push_back(v);
   if (t.direction < 0) std::sort(grid.begin() + 1, grid.end(), std::greater<>());
-  if (grid.size() < 2) return;
-  const Clock::time_point run_start = Clock::now();
-  char detail[96];
-  std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
-                t.direction > 0 ? "upwards" : "downwards", t.curve_id);
-  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
+  return grid;
+}
+
+// The upward and the downward run from one new point (continue_new_optimum, recover): the downward
+// run's points all lie below the start speed, where the upward run has none, so nothing the upward
+// run adds (merge and superseded tests, on_known_curve, best_at) can change the downward run.
+bool Sweep::both_ways(const Task& up, const Task& down) const {
+  return up.direction > 0 && down.direction < 0 && up.speed == down.speed && up.curve_id == down.curve_id &&
+         !down.report_start && up.x == down.x && task_grid(up).size() >= 2 && task_grid(down).size() >= 2;
+}
+
+Sweep::RunOutcome Sweep::compute_run(const Task& t, int number, int next_curve, std::optional<ContinuationResult> recorded,
+                                     std::vector<std::size_t>* deferred) {
+  RunOutcome o;
+  o.number = number;
+  o.first_new_curve = next_curve;
   bool repeated = !t.report_start;
-  std::optional<double> superseded;  // a recovery run stopped here: another curve is as good
-  std::optional<double> merged;      // the run stopped here: it joined an earlier run's curve
+  std::size_t emitted = 0;
   const PointCallback forward = [&](const CurvePoint& p) {
     const bool skip = repeated;
     repeated = false;
-    if (!skip && on_point_ && !on_point_(p)) {
+    const std::size_t index = emitted++;
+    if (!skip && deferred) deferred->push_back(index);
+    if (!skip && !deferred && on_point_ && !on_point_(p)) {
       stopped_ = true;
       return false;
     }
@@ -325,41 +359,39 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
     // from every start and every curve jumped to): HMT P2's runs from 1.3, 1.5 and 2.3 m/s
     // otherwise each went down to the same fold near 0.46 m/s (~27 s each).
     if (on_known_curve(p.parameter, p.x, p.objective)) {
-      merged = p.parameter;
+      o.merged = p.parameter;
       return false;
     }
     if (t.recovery) {
       const CurvePoint* other = best_at(p.parameter);
       if (other && other->objective <= p.objective + o_.same_objective * std::max(1.0, std::abs(p.objective))) {
-        superseded = p.parameter;
+        o.superseded = p.parameter;
         return false;
       }
     }
     return true;
   };
-  ContinuationOptions continuation = o_.continuation;
-  continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
-  const int first_new_curve = r_.curves;
-  const int run_number = runs_begun_++;
-  ContinuationResult run;
-  bool computed = false;
-  if (std::optional<ContinuationResult> recorded = o_.journal.find_run ? o_.journal.find_run(run_number) : std::nullopt) {
+  if (recorded) {
     // The run as an earlier attempt computed it: its points go through the same callback (the store
     // skips those it holds), so merge stops, curve numbering and the later steps are unchanged.
-    run = std::move(*recorded);
-    for (const CurvePoint& p : run.points)
+    o.run = std::move(*recorded);
+    for (const CurvePoint& p : o.run.points)
       if (!forward(p)) break;
-    ++r_.resumed_runs;
-  } else {
-    run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, r_.curves}, forward);
-    ++r_.computed_runs;
-    computed = true;
-    const std::lock_guard lock(progress_mutex_);
-    continuation_wall_ += seconds_since(run_start);
+    return o;
   }
+  ContinuationOptions continuation = o_.continuation;
+  continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
+  o.run = continue_solution(family_, t.x, task_grid(t), continuation, {t.curve_id, next_curve}, forward);
+  o.computed = true;
+  return o;
+}
+
+void Sweep::take_run(const Task& t, RunOutcome o, std::deque<Task>& queue) {
+  ContinuationResult& run = o.run;
+  ++(o.computed ? r_.computed_runs : r_.resumed_runs);
   for (const CurvePoint& p : run.points)  // the start point too, which the callback may skip
     if (p.converged) reached(p, false);
-  for (int c = first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
+  for (int c = o.first_new_curve; c < run.next_curve_id; ++c) r_.origins.push_back({SweepStep::jump, 0.0});
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
     r_.origins[static_cast<std::size_t>(j.to_curve)].speed = j.to_parameter;
@@ -373,14 +405,84 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
         break;
       }
   }
-  if (merged && !stopped_)
-    run.message = "stopped at " + std::to_string(*merged) + " m/s: joined a curve an earlier run followed";
-  else if (superseded && !stopped_)
-    run.message = "stopped at " + std::to_string(*superseded) + " m/s: another curve is as good from there on";
+  if (o.merged && !stopped_)
+    run.message = "stopped at " + std::to_string(*o.merged) + " m/s: joined a curve an earlier run followed";
+  else if (o.superseded && !stopped_)
+    run.message = "stopped at " + std::to_string(*o.superseded) + " m/s: another curve is as good from there on";
   else if (run.message == "stopped")  // the corrector's iteration callback asked to stop
     stopped_ = true;
-  if (computed && !stopped_ && o_.journal.record_run) o_.journal.record_run(run_number, run);
+  if (o.computed && !stopped_ && o_.journal.record_run) o_.journal.record_run(o.number, run);
   r_.runs.push_back(std::move(run));
+}
+
+std::optional<ContinuationResult> Sweep::recorded_run(int number) const {
+  return o_.journal.find_run ? o_.journal.find_run(number) : std::nullopt;
+}
+
+// Continues one task; queues the backward continuation of every new curve it jumps to.
+void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
+  if (task_grid(t).size() < 2) return;
+  const Clock::time_point run_start = Clock::now();
+  char detail[96];
+  std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
+                t.direction > 0 ? "upwards" : "downwards", t.curve_id);
+  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(task_grid(t).size()) - 1);
+  const int number = runs_begun_++;
+  RunOutcome o = compute_run(t, number, r_.curves, recorded_run(number), nullptr);
+  if (o.computed) {
+    const std::lock_guard lock(progress_mutex_);
+    continuation_wall_ += seconds_since(run_start);
+  }
+  take_run(t, std::move(o), queue);
+}
+
+// continue_task(up) and continue_task(down) (both_ways), the two runs computed at once on a spare
+// core (nlp/spare_core.hpp) - the same runs, points and curve ids as one after the other. The
+// downward run's points reach on_point only once the upward run has ended, in their order, so the
+// store sees the sequence it would see from one thread; its curves jumped to are numbered after
+// the upward run's. Runs an earlier attempt recorded are taken one after the other.
+void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task>& queue) {
+  const int first = runs_begun_;
+  std::optional<ContinuationResult> recorded_up = recorded_run(first), recorded_down = recorded_run(first + 1);
+  if (recorded_up || recorded_down) {
+    continue_task(up, queue);
+    if (!stopped_) continue_task(down, queue);
+    return;
+  }
+  const Clock::time_point run_start = Clock::now();
+  char detail[96];
+  std::snprintf(detail, sizeof detail, "runs %d and %d from %.4g m/s upwards and downwards, curve %d", first + 1, first + 2,
+                up.speed, up.curve_id);
+  begin_phase(up.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail,
+              static_cast<int>(task_grid(up).size() + task_grid(down).size()) - 2);
+  runs_begun_ += 2;
+  // Provisional ids of the downward run's curves jumped to, renumbered once the upward run's are known.
+  const int provisional = r_.curves + (1 << 20);
+  RunOutcome upward, downward;
+  std::vector<std::size_t> deferred;  // indices of the downward run's points to report
+  nlp::split_on_spare_core(2, 2, [&](int begin, int end, bool) {
+    for (int i = begin; i < end; ++i)
+      if (i == 0)
+        upward = compute_run(up, first, r_.curves, std::nullopt, nullptr);
+      else
+        downward = compute_run(down, first + 1, provisional, std::nullopt, &deferred);
+  });
+  {
+    const std::lock_guard lock(progress_mutex_);
+    continuation_wall_ += seconds_since(run_start);
+  }
+  continuation::renumber_new_curves(downward.run, provisional, upward.run.next_curve_id);
+  downward.first_new_curve = upward.run.next_curve_id;
+  take_run(up, std::move(upward), queue);
+  if (stopped_) return;
+  for (std::size_t index : deferred)
+    if (on_point_ && !on_point_(downward.run.points[index])) {  // the job stops: the run ends at this point
+      stopped_ = true;
+      downward.run.points.resize(index + 1);
+      downward.run.message = "stopped";
+      break;
+    }
+  take_run(down, std::move(downward), queue);
 }
 
 // Unreached speeds first (nearest to a reached one, then the lowest), then possibly dominated ones.

@@ -30,6 +30,11 @@
 // neighbour curve) pair of a dominance test once, so the recovery ends (max_curves). A speed still
 // without a point gets a reason naming what was tried and which options to change.
 // BestPoint::step tells which step found the curve through the selected point.
+// The two runs from a new point (upwards and downwards) are computed at once when a core is spare
+// (nlp/spare_core.hpp): below the start speed the upward run has no point, so the downward run is
+// the same whichever ran first, and on_point sees the points in the order of one thread (the
+// downward run's once the upward run has ended). The corrector's callbacks (on_iteration,
+// should_stop) are called from several threads, as they are by multistart workers.
 // Before step 1, known gaits (options.known_gaits: a gait the caller solved at a grid speed, such as
 // a foot design's optimum, section 10.2) are solved from and continued in both directions like a
 // seed optimum; the seed multistarts follow and add what they find off those curves.
@@ -95,7 +100,8 @@ struct SpeedSweepOptions {
   std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
   // Called when a phase begins, after every multistart solve and at every converged grid point
-  // (sweep_progress.hpp); from the sweep's thread or, one call at a time, from multistart workers.
+  // (sweep_progress.hpp); from the sweep's thread or, one call at a time, from multistart workers
+  // and the thread of a downward run (below).
   std::function<void(const SweepProgress&)> on_progress;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // What a speed sweep has finished, so that a resumed sweep reuses it instead of solving it again
 // (issue 19 item 5). The sweep is deterministic (multistart.hpp: results do not depend on the
-// threads; continuation is sequential), so in every attempt its n-th multistart batch and its n-th
+// threads; a continuation run is sequential, and runs computed at once are numbered and taken in
+// as one after the other, speed_sweep.hpp), so in every attempt its n-th multistart batch and its n-th
 // continuation run are the same computation: they are keyed by sequence number. A run is recorded
 // once it ended on its own (not stopped by the job); a run interrupted by a crash is computed again
 // from its start, and its points already stored keep their keys. Multistart solves are recorded
