@@ -101,10 +101,14 @@ const CurvePoint* lowest_converged(const ContinuationResult& r) {
 
 // The free-foot curve's last resort (step 2): a solve at each of `speeds` (descending), each from
 // the last converged point, by the distant-start solver - W_1 of (6.24) on differences, where the
-// continuation's corrector keeps the predictor's W - with up to kDesignRestarts restarts; a speed
-// without a KKT point is skipped, two in a row end it. From the rho 10 design (corners fixed) such
-// solves converged at 2.0-1.2 m/s in 21-208 iterations and at 1.0 m/s after a restart; at 1.1 and
-// 0.9-0.3 m/s they stopped at MaxIter (the seed: the free-foot problem converges worse below 1 m/s).
+// continuation's corrector keeps the predictor's W - with up to kDesignRestarts restarts, down to
+// the first speed without a KKT point. From the rho 10 design (corners fixed) they converge at 1.2,
+// 1.1 and 1.0 m/s in 128-208 iterations and stop at MaxIter at 0.9 m/s (the seed: the free-foot
+// problem converges worse below 1 m/s). Until this version a speed without a KKT point was skipped
+// and only two in a row ended the solves; in the 33 free-foot continuations of
+// bench/results/foot_design_bench.txt (densities 10-70) no speed after a skipped one converged (an
+// older corrector had once reached 1.0 m/s after failing at 1.1), and the second failure cost the
+// rho 10 study 21 s of its critical path.
 ContinuationResult warm_started_solves(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                                        const CurvePoint& from, const std::vector<double>& speeds,
                                        const nlp::SolverOptions& corrector) {
@@ -114,7 +118,6 @@ ContinuationResult warm_started_solves(const walker::WalkerModel<double>& model,
   const nlp::SolverOptions solver = walker::distant_start_solver(corrector, 0);
   Eigen::VectorXd x = from.x;
   r.finished = true;
-  int failures_in_a_row = 0;
   for (double v : speeds) {
     walker::GaitProblemOptions at = problem;
     at.speed = v;
@@ -139,10 +142,8 @@ ContinuationResult warm_started_solves(const walker::WalkerModel<double>& model,
     if (!p.converged) {
       r.finished = false;
       r.message = "no KKT point at " + speed_text(v) + " from the last converged point: " + s.message;
-      if (++failures_in_a_row == 2) break;
-      continue;
+      break;
     }
-    failures_in_a_row = 0;
     x = s.x;
   }
   if (r.finished) r.message = "reached the last parameter value";
@@ -402,25 +403,13 @@ DensityDesign DesignStudy::at(double rho) {
       return journaled_run(n, [&] { return continue_solution(family, x0, values, options); });
     };
     d.free_foot = run(0, z0, grid, co);
-    // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s);
-    // where the QPSQP run stopped, the rest of the grid is tried with the trivial predictor (warm
-    // starts at each grid speed) from the lowest converged point.
-    if (const CurvePoint* last = lowest_converged(d.free_foot); !d.free_foot.finished && last) {
-      std::vector<double> rest{last->parameter};
-      for (double v : grid)
-        if (v < last->parameter - 1e-12) rest.push_back(v);
-      if (rest.size() >= 2) {
-        ContinuationOptions trivial = co;
-        trivial.predictor = continuation::Predictor::trivial;
-        const Eigen::VectorXd x = last->x;
-        ContinuationResult more = run(1, x, rest, trivial);
-        d.free_foot.message += "; then the trivial predictor: " + more.message;
-        d.free_foot.finished = more.finished;
-        d.free_foot.points.insert(d.free_foot.points.end(), more.points.begin() + 1, more.points.end());
-      }
-    }
-    // Where both stopped, warm-started solves at the grid speeds below (warm_started_solves): from
-    // the rho 10 design they reached 1.0 m/s where both runs stopped at 1.22 m/s.
+    // The free-foot problem converges worse than the fixed-foot one (section 10.2, below 1 m/s):
+    // where the QPSQP run stopped, warm-started solves at the grid speeds below
+    // (warm_started_solves) from its lowest converged point. From the rho 10 design they reached
+    // 1.0 m/s where the run stopped at 1.2145 m/s. (A run with the trivial predictor from that
+    // point, tried first until this version - journal run 1 -, ended where the QPSQP run had, without
+    // a converged point, in all 29 free-foot continuations of bench/results/foot_design_bench.txt
+    // (densities 10-70): 11 s of the rho 10 study's critical path.)
     if (const CurvePoint* lowest = lowest_converged(d.free_foot); !d.free_foot.finished && lowest) {
       std::vector<double> rest;
       for (double v : grid)

@@ -12,8 +12,8 @@
 //   2. free-foot continuation: the design continued with QPSQP over the speed grid, downwards from
 //      the design speed, the foot free (an optimal foot per speed, Fig. 10.2a orange) but for the
 //      sharp corners of the design (k <= 1e-6 stays at its value, as k_H, k_T in Table 10.1); where the
-//      QPSQP run stops, the rest of the grid with the trivial predictor, and where that stops too,
-//      warm-started solves from (6.24) at the grid speeds below, down to the first without a KKT point;
+//      QPSQP run stops, warm-started solves from (6.24) at the grid speeds below, down to the first
+//      without a KKT point;
 //   3. fixed-foot sweeps (speed_sweep.hpp) of the feet optimal at the highest and at the lowest
 //      grid speed reached (Fig. 10.2a green and blue), each started from that foot's optimal gait
 //      (SpeedSweepOptions::known_gaits) before its seed multistarts. The design's sweep needs only
@@ -24,8 +24,8 @@
 // the design / mean f_mech of the reference, over the grid speeds both reach.
 // Resume (sweep_journal.hpp): every part of the study has a journal of its own, named
 //   "references/start foot", "references/point feet"       the reference sweeps
-//   "rho R/design"   the design multistart (batch 0) and the free-foot runs (QPSQP run 0, trivial
-//                    run 1, warm-started solves run 2)
+//   "rho R/design"   the design multistart (batch 0) and the free-foot runs (QPSQP run 0,
+//                    warm-started solves run 2; run 1 was a trivial-predictor run of older versions)
 //   "rho R/high", "rho R/low"                              the fixed-foot sweeps of step 3
 // so a resumed study replays what an earlier attempt finished instead of solving it again.
 #include "cyclopt/foot/design_bounds.hpp"
