@@ -1,9 +1,14 @@
 #include "cyclopt/nlp/spare_core.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <exception>
 #include <thread>
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 namespace cyclopt::nlp {
 
@@ -49,6 +54,13 @@ void split_on_spare_core(int n, int min_split, const std::function<void(int begi
   helper.join();
   if (own_failure) std::rethrow_exception(own_failure);
   if (helper_failure) std::rethrow_exception(helper_failure);
+}
+
+void lower_thread_priority() {
+  const auto thread = static_cast<id_t>(::syscall(SYS_gettid));
+  errno = 0;
+  const int nice = ::getpriority(PRIO_PROCESS, thread);
+  if (errno == 0) ::setpriority(PRIO_PROCESS, thread, nice + 10);
 }
 
 }  // namespace cyclopt::nlp

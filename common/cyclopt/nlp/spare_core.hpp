@@ -24,4 +24,12 @@ void set_spare_core_rule(SpareCoreRule rule);
 // range or state it synchronises.
 void split_on_spare_core(int n, int min_split, const std::function<void(int begin, int end, bool helper)>& work);
 
+// Lowers the calling thread's scheduling priority (nice + 10; on Linux a per-thread value that the
+// threads it starts inherit), so that it and its workers take the cores the process's other
+// threads leave idle rather than sharing them equally: for work beside a study's critical path
+// (the foot design's sweep of the design beside the free-foot continuation and the low-speed
+// design's sweep, studies/foot_design.cpp). Timing only: results do not depend on it. Where the
+// OS refuses, nothing changes.
+void lower_thread_priority();
+
 }  // namespace cyclopt::nlp
