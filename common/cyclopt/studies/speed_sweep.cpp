@@ -95,11 +95,15 @@ class Sweep {
   std::vector<double> task_grid(const Task& t) const;  // the task's start speed, then the grid its way
   bool both_ways(const Task& up, const Task& down) const;
   std::optional<ContinuationResult> recorded_run(int number) const;
-  // The run of t; its points go to on_point_ as they come, or (deferred) only their indices are collected.
-  RunOutcome compute_run(const Task& t, int number, int next_curve, std::optional<ContinuationResult> recorded,
-                         std::vector<std::size_t>* deferred);
+  // The run of t over grid (task_grid); its points go to on_point_ as they come, or (deferred) only
+  // their indices are collected.
+  RunOutcome compute_run(const Task& t, const std::vector<double>& grid, int number, int next_curve,
+                         std::optional<ContinuationResult> recorded, std::vector<std::size_t>* deferred);
   void take_run(const Task& t, RunOutcome o, std::deque<Task>& queue);
   void continue_task(const Task& t, std::deque<Task>& queue);
+  // continue_task with the task's grid (>= 2 values) and the journal's record of its run, if any.
+  void run_task(const Task& t, const std::vector<double>& grid, std::optional<ContinuationResult> recorded,
+                std::deque<Task>& queue);
   void continue_both_ways(const Task& up, const Task& down, std::deque<Task>& queue);
   std::optional<Target> next_target();
   void recover(const Target& target);
@@ -337,8 +341,8 @@ bool Sweep::both_ways(const Task& up, const Task& down) const {
          !down.report_start && up.x == down.x && task_grid(up).size() >= 2 && task_grid(down).size() >= 2;
 }
 
-Sweep::RunOutcome Sweep::compute_run(const Task& t, int number, int next_curve, std::optional<ContinuationResult> recorded,
-                                     std::vector<std::size_t>* deferred) {
+Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& grid, int number, int next_curve,
+                                     std::optional<ContinuationResult> recorded, std::vector<std::size_t>* deferred) {
   RunOutcome o;
   o.number = number;
   o.first_new_curve = next_curve;
@@ -381,7 +385,7 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, int number, int next_curve, 
   }
   ContinuationOptions continuation = o_.continuation;
   continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
-  o.run = continue_solution(family_, t.x, task_grid(t), continuation, {t.curve_id, next_curve}, forward);
+  o.run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, next_curve}, forward);
   o.computed = true;
   return o;
 }
@@ -421,14 +425,19 @@ std::optional<ContinuationResult> Sweep::recorded_run(int number) const {
 
 // Continues one task; queues the backward continuation of every new curve it jumps to.
 void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
-  if (task_grid(t).size() < 2) return;
+  const std::vector<double> grid = task_grid(t);
+  if (grid.size() >= 2) run_task(t, grid, recorded_run(runs_begun_), queue);
+}
+
+void Sweep::run_task(const Task& t, const std::vector<double>& grid, std::optional<ContinuationResult> recorded,
+                     std::deque<Task>& queue) {
   const Clock::time_point run_start = Clock::now();
   char detail[96];
   std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
                 t.direction > 0 ? "upwards" : "downwards", t.curve_id);
-  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(task_grid(t).size()) - 1);
+  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
   const int number = runs_begun_++;
-  RunOutcome o = compute_run(t, number, r_.curves, recorded_run(number), nullptr);
+  RunOutcome o = compute_run(t, grid, number, r_.curves, std::move(recorded), nullptr);
   if (o.computed) {
     const std::lock_guard lock(progress_mutex_);
     continuation_wall_ += seconds_since(run_start);
@@ -443,10 +452,11 @@ void Sweep::continue_task(const Task& t, std::deque<Task>& queue) {
 // the upward run's. Runs an earlier attempt recorded are taken one after the other.
 void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task>& queue) {
   const int first = runs_begun_;
+  const std::vector<double> up_grid = task_grid(up), down_grid = task_grid(down);
   std::optional<ContinuationResult> recorded_up = recorded_run(first), recorded_down = recorded_run(first + 1);
   if (recorded_up || recorded_down) {
-    continue_task(up, queue);
-    if (!stopped_) continue_task(down, queue);
+    run_task(up, up_grid, std::move(recorded_up), queue);
+    if (!stopped_) run_task(down, down_grid, std::move(recorded_down), queue);
     return;
   }
   const Clock::time_point run_start = Clock::now();
@@ -454,7 +464,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   std::snprintf(detail, sizeof detail, "runs %d and %d from %.4g m/s upwards and downwards, curve %d", first + 1, first + 2,
                 up.speed, up.curve_id);
   begin_phase(up.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail,
-              static_cast<int>(task_grid(up).size() + task_grid(down).size()) - 2);
+              static_cast<int>(up_grid.size() + down_grid.size()) - 2);
   runs_begun_ += 2;
   // Provisional ids of the downward run's curves jumped to, renumbered once the upward run's are known.
   const int provisional = r_.curves + (1 << 20);
@@ -463,9 +473,9 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   nlp::split_on_spare_core(2, 2, [&](int begin, int end, bool) {
     for (int i = begin; i < end; ++i)
       if (i == 0)
-        upward = compute_run(up, first, r_.curves, std::nullopt, nullptr);
+        upward = compute_run(up, up_grid, first, r_.curves, std::nullopt, nullptr);
       else
-        downward = compute_run(down, first + 1, provisional, std::nullopt, &deferred);
+        downward = compute_run(down, down_grid, first + 1, provisional, std::nullopt, &deferred);
   });
   {
     const std::lock_guard lock(progress_mutex_);
