@@ -28,6 +28,13 @@ namespace {
 using nlp::Clock;
 using nlp::seconds_since;
 
+// SqpOptions::max_qp_iterations of the sweep's local solves, tighter than the design multistart's
+// walker::kDistantStartQpIterations (200000, whose converged design runs needed up to 18695). Runs
+// that drift far from any gait (violation 2..1400, f 10..1e15) go on solving l1-relaxed QPs of up to
+// ~1000 variables, 200-1600 active-set iterations per SQP iteration, until MaxFun: P2-shoes HMT
+// sweeps (bench/results/speed_sweep_bench.txt) had such runs of 26, 31, 32 and 154 s. No converged
+// run of 1554 sweep solves (four feet, three seeds, variants) needed more than 10351.
+constexpr int kQpIterations = 20000;
 
 // A coarse solve that ends with at most this constraint violation found a gait on the coarse grid.
 constexpr double kCoarseFeasible = 1e-6;
@@ -210,6 +217,7 @@ nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& mode
   nlp::MultistartOptions mo;
   mo.solver = walker::distant_start_solver(o_.continuation.corrector);
   mo.solver.sqp.progress_window = walker::kMultistartProgressWindow;
+  mo.solver.sqp.max_qp_iterations = kQpIterations;
   const int batch = batches_++;
   std::atomic<int> resumed{0};
   journal_multistart(mo, o_.journal, batch, &resumed);
