@@ -217,6 +217,23 @@ TEST(WalkerJobSpec, CoarseMultistartGridIsOffOrAUsableGrid) {
   }
 }
 
+TEST(WalkerJobSpec, RunnerUpsAreACountUpToTen) {
+  // continuation.runner_ups: further seed-speed optima continued while best, for every kind that sweeps.
+  const nlohmann::json sweep = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};
+  const nlohmann::json comparison = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
+  for (const nlohmann::json& good : {sweep, comparison}) {
+    nlohmann::json s = good;
+    for (int n : {0, 2, 10}) {
+      s["continuation"] = {{"runner_ups", n}};
+      EXPECT_EQ(rejection(s), "accepted") << n;
+    }
+    for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(11), nlohmann::json(1.5), nlohmann::json("2")}) {
+      s["continuation"] = {{"runner_ups", bad}};
+      EXPECT_EQ(rejection(s).rfind("continuation.runner_ups: ", 0), 0u) << rejection(s);
+    }
+  }
+}
+
 TEST(WalkerJobSpec, PredictorHessianIsPerPointOrPerTry) {
   for (const char* task : {"sweep", "continuation"}) {
     nlohmann::json s = {{"scene", "walker"}, {"task", task}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};

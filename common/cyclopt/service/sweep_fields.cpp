@@ -9,13 +9,14 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec) {
   SweepFields f;
   if (!spec.contains("continuation")) return f;
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
-  reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region", "corrector_max_iterations", "coarse_points"});
+  reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region", "corrector_max_iterations", "coarse_points", "runner_ups"});
   if (c.contains("seed_speeds"))
     f.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
   f.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(f.min_trust_region);
   f.corrector_max_iterations =
       optional_integer(c, "continuation", "corrector_max_iterations", 1, 100000).value_or(f.corrector_max_iterations);
   f.coarse_points = parse_coarse_points(c, f.coarse_points);
+  f.runner_ups = parse_runner_ups(c, f.runner_ups);
   return f;
 }
 
@@ -27,11 +28,16 @@ int parse_coarse_points(const nlohmann::json& c, int fallback) {
   return points;
 }
 
+int parse_runner_ups(const nlohmann::json& c, int fallback) {
+  return optional_integer(c, "continuation", "runner_ups", 0, kMaxRunnerUps).value_or(fallback);
+}
+
 nlohmann::json sweep_fields_json(const SweepFields& fields) {
   return {{"seed_speeds", fields.seed_speeds},
           {"min_trust_region", fields.min_trust_region},
           {"corrector_max_iterations", fields.corrector_max_iterations},
-          {"coarse_points", fields.coarse_points}};
+          {"coarse_points", fields.coarse_points},
+          {"runner_ups", fields.runner_ups}};
 }
 
 studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFields& fields, int starts) {
@@ -44,6 +50,7 @@ studies::SpeedSweepOptions sweep_options(const WalkerJob& walker, const SweepFie
   o.continuation.min_trust_region = fields.min_trust_region;
   o.corrector_max_iterations = fields.corrector_max_iterations;
   o.coarse_points = fields.coarse_points;
+  o.runner_ups = fields.runner_ups;
   o.continuation.corrector = walker.solver;
   return o;
 }

@@ -3,11 +3,13 @@
 // foot_design): the walker fields (walker_job_spec.hpp) and
 //
 //   "continuation": {"seed_speeds": "0.3:1:2.3", "min_trust_region": 0.002, "corrector_max_iterations": 300,
-//                    "coarse_points": 100}
+//                    "coarse_points": 100, "runner_ups": 2}
 //
 // the sweeps' multistart speeds (default 0.3, 1.3, 2.3), Delta_min (Table 7.1), the corrector's
 // MaxIter at each continuation point (studies::SpeedSweepOptions::corrector_max_iterations) and the
-// grid of the coarse-to-fine multistarts (SpeedSweepOptions::coarse_points, 0: off).
+// grid of the coarse-to-fine multistarts (SpeedSweepOptions::coarse_points, 0: off) and the further
+// optima of each seed-speed multistart continued while best (SpeedSweepOptions::runner_ups, 0: the
+// seed's workflow).
 #include "cyclopt/service/walker_job_spec.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
@@ -22,6 +24,7 @@ struct SweepFields {
   double min_trust_region = continuation::ContinuationOptions{}.min_trust_region;
   int corrector_max_iterations = studies::SpeedSweepOptions{}.corrector_max_iterations;
   int coarse_points = studies::SpeedSweepOptions{}.coarse_points;
+  int runner_ups = studies::SpeedSweepOptions{}.runner_ups;
 };
 
 // Reads spec["continuation"] when present; throws SpecError naming the field.
@@ -29,6 +32,9 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec);
 // continuation.coarse_points of the "continuation" object c: 0 (off) or a grid of P points in
 // [kMinGaitPoints, kMaxGaitPoints] like "points"; `fallback` when absent. Throws SpecError naming the field.
 int parse_coarse_points(const nlohmann::json& c, int fallback);
+// continuation.runner_ups of c: in [0, kMaxRunnerUps]; `fallback` when absent. Throws SpecError naming the field.
+inline constexpr int kMaxRunnerUps = 10;
+int parse_runner_ups(const nlohmann::json& c, int fallback);
 // The "continuation" block with every field (for the resolved spec, resolved_spec.hpp).
 nlohmann::json sweep_fields_json(const SweepFields& fields);
 

@@ -32,6 +32,7 @@ struct ContinuationJob {
   std::vector<double> values;  // p_0, p_1, ...: the speeds, or "continuation.values"
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};
   int coarse_points = studies::SpeedSweepOptions{}.coarse_points;  // a sweep's multistarts
+  int runner_ups = studies::SpeedSweepOptions{}.runner_ups;        // a sweep's seed-speed optima continued
 };
 
 ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJobFields& common) {
@@ -43,7 +44,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
   reject_unknown_keys(c, "continuation",
                       {"predictor", "predictor_hessian", "fixed_step", "min_trust_region", "max_trust_region", "parameter",
-                       "values", "seed_speeds", "coarse_points"});
+                       "values", "seed_speeds", "coarse_points", "runner_ups"});
   if (c.contains("predictor"))
     j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", continuation::predictor_names()));
   if (c.contains("predictor_hessian"))
@@ -57,6 +58,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   if (c.contains("seed_speeds"))
     j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
   j.coarse_points = parse_coarse_points(c, j.coarse_points);
+  j.runner_ups = parse_runner_ups(c, j.runner_ups);
   if (c.contains("parameter")) {
     std::vector<std::string> names = walker::model_parameter_names(j.walker.model());
     names.insert(names.begin(), "speed");
@@ -81,7 +83,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
 }
 
 // The resolved spec (resolved_spec.hpp): the walker fields and the whole "continuation" block;
-// seed_speeds, coarse_points and the multistart only for a sweep, which draws random starts at them.
+// seed_speeds, coarse_points, runner_ups and the multistart only for a sweep, which draws random starts at them.
 nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
   nlohmann::json r = walker_job_json(j.walker, true, sweep);
   nlohmann::json c = {{"predictor", continuation::to_string(j.options.predictor)},
@@ -91,7 +93,7 @@ nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
                       {"max_trust_region", j.options.max_trust_region},
                       {"parameter", j.parameter}};
   if (j.parameter != "speed") c["values"] = j.values;
-  if (sweep) c["seed_speeds"] = j.seed_speeds, c["coarse_points"] = j.coarse_points;
+  if (sweep) c["seed_speeds"] = j.seed_speeds, c["coarse_points"] = j.coarse_points, c["runner_ups"] = j.runner_ups;
   r["continuation"] = c;
   return r;
 }
@@ -158,6 +160,7 @@ void run_sweep(const ContinuationJob& job, JobContext& ctx) {
   so.speeds = job.values;
   so.seed_speeds = job.seed_speeds;
   so.coarse_points = job.coarse_points;
+  so.runner_ups = job.runner_ups;
   so.starts = job.walker.starts;
   so.seed = job.walker.seed;
   so.scale = job.walker.scale;

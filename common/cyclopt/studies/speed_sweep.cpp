@@ -51,7 +51,7 @@ struct Task {
   double direction = 1.0;  // +1 towards the largest speed
   int curve_id = 0;
   bool report_start = false;  // the start point is new (not reported by an earlier run)
-  bool recovery = false;      // stops where another curve is at least as good
+  bool while_best = false;    // stops where another curve is at least as good (recovery, runner-ups)
 };
 
 // A grid speed to recover and the points to start from.
@@ -79,10 +79,13 @@ class Sweep {
   // options.coarse_points first (SpeedSweepOptions::coarse_points).
   nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first = false);
   nlp::MultistartResult solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts);
-  std::optional<Eigen::VectorXd> gait_multistart_at(double v, int* solves = nullptr);
+  // Multistart from perturbations of the automatic starting gait at v (none if it has no real solution).
+  nlp::MultistartResult gait_multistart_at(double v, int* solves = nullptr);
   // Opens a curve through the optimum x at v and continues it both ways, unless there is none or it
   // lies on a known curve.
   void continue_new_optimum(double v, const std::optional<Eigen::VectorXd>& x, SweepStep step);
+  // Step 2b: the runner-up optima of the seed multistart m at v, each continued while it is the best known.
+  void continue_runner_ups(double v, const nlp::MultistartResult& m);
   bool on_known_curve(double v, const Eigen::VectorXd& x, double f) const;
   bool near_known_curve(const CurvePoint& p) const;
   // Grid speed i has no point and curves were opened since its last unreached recovery (or none ran).
@@ -128,6 +131,7 @@ class Sweep {
   const ParametricProblem family_;
   SpeedSweepResult r_;
   bool stopped_ = false;
+  bool recovering_ = false;  // in the recovery loop (progress phase of its runs)
   std::vector<bool> seeded_;                    // per grid speed: a gait multistart ran there
   // Per grid speed: the curves there were (r_.curves) when its unreached recovery was last tried,
   // -1 before any; it is tried again once curves were opened since, from those curves only.
@@ -250,12 +254,12 @@ nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& mode
   return m;
 }
 
-std::optional<Eigen::VectorXd> Sweep::gait_multistart_at(double v, int* solves) {
+nlp::MultistartResult Sweep::gait_multistart_at(double v, int* solves) {
   const walker::GaitEvaluator ev(model_);
   walker::StartingGaitOptions so;
   so.speed = v;
   const walker::StartingGait sg = walker::starting_gait(ev, so);
-  if (!sg.real) return std::nullopt;
+  if (!sg.real) return {};
   const walker::GaitProblem shape(model_, at_speed(v));
   std::vector<Eigen::VectorXd> starts;
   for (int i = 0; i < o_.starts; ++i) {
@@ -263,7 +267,7 @@ std::optional<Eigen::VectorXd> Sweep::gait_multistart_at(double v, int* solves) 
     starts.push_back(shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)));
   }
   if (solves) *solves += o_.starts;
-  return best_optimum(solve_from(v, std::move(starts), true));
+  return solve_from(v, std::move(starts), true);
 }
 
 std::optional<Eigen::VectorXd> best_optimum(const nlp::MultistartResult& m) {
@@ -278,6 +282,19 @@ void Sweep::continue_new_optimum(double v, const std::optional<Eigen::VectorXd>&
   const int id = open_curve({step, v});
   std::deque<Task> queue{{*x, v, 1.0, id, true, false}, {*x, v, -1.0, id, false, false}};
   run_queue(queue);
+}
+
+void Sweep::continue_runner_ups(double v, const nlp::MultistartResult& m) {
+  const int count = std::min(o_.runner_ups, static_cast<int>(m.optima.size()) - 1);
+  for (int k = 1; k <= count && !stopped_ && r_.curves < o_.max_curves; ++k) {
+    const nlp::MultistartOptimum& optimum = m.optima[static_cast<std::size_t>(k)];
+    const double best = m.optima.front().objective;
+    if (optimum.objective - best > o_.runner_up_margin * std::max(std::abs(best), 1e-12)) break;
+    if (on_known_curve(v, optimum.x, optimum.objective)) continue;  // a run from a better optimum passed it
+    const int id = open_curve({SweepStep::seed_multistart, v});
+    std::deque<Task> queue{{optimum.x, v, 1.0, id, true, true}, {optimum.x, v, -1.0, id, false, true}};
+    run_queue(queue);
+  }
 }
 
 bool Sweep::on_known_curve(double v, const Eigen::VectorXd& x, double f) const {
@@ -374,7 +391,7 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& g
       o.merged = p.parameter;
       return false;
     }
-    if (t.recovery) {
+    if (t.while_best && !same_speed(p.parameter, t.speed)) {  // a runner-up starts below the best at its speed
       const CurvePoint* other = best_at(p.parameter);
       if (other && other->objective <= p.objective + o_.same_objective * std::max(1.0, std::abs(p.objective))) {
         o.superseded = p.parameter;
@@ -413,7 +430,7 @@ void Sweep::take_run(const Task& t, RunOutcome o, std::deque<Task>& queue) {
         // A jump onto a curve an earlier run already followed (the same optimum at the same speed,
         // or next to one of its points) needs no second backward continuation.
         if (!on_known_curve(p.parameter, p.x, p.objective) && !near_known_curve(p))
-          queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false, t.recovery});
+          queue.push_back({p.x, p.parameter, -t.direction, j.to_curve, false, t.while_best});
         break;
       }
   }
@@ -443,7 +460,7 @@ void Sweep::run_task(const Task& t, const std::vector<double>& grid, std::option
   char detail[96];
   std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
                 t.direction > 0 ? "upwards" : "downwards", t.curve_id);
-  begin_phase(t.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
+  begin_phase(recovering_ ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
   const int number = runs_begun_++;
   RunOutcome o = compute_run(t, grid, number, r_.curves, std::move(recorded), nullptr);
   if (o.computed) {
@@ -471,7 +488,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   char detail[96];
   std::snprintf(detail, sizeof detail, "runs %d and %d from %.4g m/s upwards and downwards, curve %d", first + 1, first + 2,
                 up.speed, up.curve_id);
-  begin_phase(up.recovery ? SweepPhase::recovery : SweepPhase::continuation, detail,
+  begin_phase(recovering_ ? SweepPhase::recovery : SweepPhase::continuation, detail,
               static_cast<int>(up_grid.size() + down_grid.size()) - 2);
   runs_begun_ += 2;
   // Provisional ids of the downward run's curves jumped to, renumbered once the upward run's are known.
@@ -607,7 +624,7 @@ void Sweep::recover(const Target& target) {
   if (!found && target.unreached && !seeded_[target.index]) {
     seeded_[target.index] = true;
     int solves = 0;
-    const std::optional<Eigen::VectorXd> g = gait_multistart_at(v, &solves);
+    const std::optional<Eigen::VectorXd> g = best_optimum(gait_multistart_at(v, &solves));
     a.solves += solves;
     if (g) {
       nlp::Evaluation e;
@@ -689,11 +706,14 @@ SpeedSweepResult Sweep::run() {
     char detail[32];
     std::snprintf(detail, sizeof detail, "at %.4g m/s", v);
     begin_phase(SweepPhase::multistart, detail, o_.starts);
-    continue_new_optimum(v, gait_multistart_at(v), SweepStep::seed_multistart);
+    const nlp::MultistartResult m = gait_multistart_at(v);
+    continue_new_optimum(v, best_optimum(m), SweepStep::seed_multistart);
+    continue_runner_ups(v, m);
   }
   select_best();
   if (o_.recover && !stopped_) {
     const Clock::time_point recovery_start = Clock::now();
+    recovering_ = true;
     while (!stopped_) {
       const std::optional<Target> target = next_target();
       if (!target) break;
@@ -746,6 +766,8 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   if (options.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (options.dominance_starts < 0) throw std::invalid_argument("dominance_starts: must be >= 0 (0: starts)");
   if (options.max_curves < 1) throw std::invalid_argument("max_curves: must be >= 1");
+  if (options.runner_ups < 0) throw std::invalid_argument("runner_ups: must be >= 0 (0: the best optimum only)");
+  if (!(options.runner_up_margin >= 0.0)) throw std::invalid_argument("runner_up_margin: must be >= 0");
   if (options.corrector_max_iterations < 1) throw std::invalid_argument("corrector_max_iterations: must be >= 1");
   if (options.coarse_points < 0) throw std::invalid_argument("coarse_points: must be >= 0 (0: off)");
   const int gait_count = walker::GaitProblem(model, problem).gait_parameter_count();

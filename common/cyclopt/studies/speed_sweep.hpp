@@ -3,6 +3,8 @@
 //   1. multistart at a few seed speeds (0.3, 1.3, 2.3 m/s) from the automatic starting gait;
 //   2. the best optimum of each (unless it lies on a curve already found) is continued with the
 //      QPSQP method in both directions over the whole speed grid;
+//   2b. (optional, not in the seed) up to runner_ups further optima of each, within
+//      runner_up_margin of its best, are continued both ways while they are the best known;
 //   3. every curve jumped to is continued back, against the direction it was found in, so its
 //      extent is known (the seed chose the existence ranges by hand);
 //   4. per grid speed, the best converged point of all curves is selected (by hand in the seed).
@@ -73,6 +75,18 @@ struct SpeedSweepOptions {
   // (rho 40 saving 17.6 % instead of 19.6 %, rho 60 6.7 % instead of 7.8 %), hence the default.
   int dominance_starts = 0;
   int max_curves = 24;                              // curves continued at most (each jump or recovery opens one)
+  // Step 2b (not in the seed): up to runner_ups further distinct optima of each seed-speed
+  // multistart, within runner_up_margin (relative) of its best, are continued both ways while they
+  // are the best known (a run stops at the first grid speed where another curve is at least as
+  // good). An optimum slightly worse at the seed speed may lie on the curve that is best elsewhere.
+  // Measured on P2-shoes HMT, 20 starts (bench/results/speed_sweep_bench.txt): with starts 2-21
+  // instead of 1-20 the 2.3 m/s multistart finds a 1.9 % better optimum there, continues only it and
+  // misses the curve that is best from 2.2 m/s down (mean f_mech 0.02476 instead of 0.02196); with
+  // runner_ups 2 both start sets give the same curves over 0.7-2.3 m/s (means 0.02245 and 0.02259),
+  // but the extra curves change the low-speed recovery's path (0.3 m/s 0.0088 instead of 0.0019
+  // with starts 1-20) and cost 5-40 s, so the default is the seed's 0.
+  int runner_ups = 0;
+  double runner_up_margin = 0.05;
   bool recover = true;                              // R1-R3 above; false: the seed's workflow only
   // A seed optimum lies on a known curve if a converged point there has |f - f_c| <=
   // same_objective * max(1, |f|) and |x - x_c|_inf <= same_x.
