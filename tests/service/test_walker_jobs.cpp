@@ -11,6 +11,8 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace cyclopt {
 namespace {
@@ -199,39 +201,35 @@ TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {
   EXPECT_EQ(rejection(s).rfind("feet", 0), 0u) << rejection(s);
 }
 
-TEST(WalkerJobSpec, CoarseMultistartGridIsOffOrAUsableGrid) {
-  // continuation.coarse_points: 0 (off) or [25, 20000] like points, for every kind that sweeps.
+// continuation.<field> for every kind that sweeps: the `good` values accepted, the `bad` ones refused
+// naming the field and `bound` (the admissible range's end).
+void expect_sweep_continuation_field(const std::string& field, const std::vector<nlohmann::json>& good,
+                                     const std::vector<nlohmann::json>& bad, const std::string& bound) {
   const nlohmann::json sweep = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};
   const nlohmann::json comparison = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
-  for (const nlohmann::json& good : {sweep, comparison}) {
-    nlohmann::json s = good;
-    for (int points : {0, 25, 100}) {
-      s["continuation"] = {{"coarse_points", points}};
-      EXPECT_EQ(rejection(s), "accepted") << points;
+  for (const nlohmann::json& spec : {sweep, comparison}) {
+    nlohmann::json s = spec;
+    for (const nlohmann::json& v : good) {
+      s["continuation"] = {{field, v}};
+      EXPECT_EQ(rejection(s), "accepted") << field << " " << v;
     }
-    for (int points : {-1, 1, 24, 20001}) {
-      s["continuation"] = {{"coarse_points", points}};
-      EXPECT_EQ(rejection(s).rfind("continuation.coarse_points: ", 0), 0u) << rejection(s);
-      EXPECT_NE(rejection(s).find("20000"), std::string::npos) << rejection(s);
+    for (const nlohmann::json& v : bad) {
+      s["continuation"] = {{field, v}};
+      const std::string refused = rejection(s);
+      EXPECT_EQ(refused.rfind("continuation." + field + ": ", 0), 0u) << refused;
+      EXPECT_NE(refused.find(bound), std::string::npos) << refused;
     }
   }
 }
 
+TEST(WalkerJobSpec, CoarseMultistartGridIsOffOrAUsableGrid) {
+  // continuation.coarse_points: 0 (off) or [25, 20000] like points.
+  expect_sweep_continuation_field("coarse_points", {0, 25, 100}, {-1, 1, 24, 20001}, "20000");
+}
+
 TEST(WalkerJobSpec, RunnerUpsAreACountUpToTen) {
-  // continuation.runner_ups: further seed-speed optima continued while best, for every kind that sweeps.
-  const nlohmann::json sweep = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "0.6:0.1:0.8"}};
-  const nlohmann::json comparison = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "0.3:0.1:2.3"}};
-  for (const nlohmann::json& good : {sweep, comparison}) {
-    nlohmann::json s = good;
-    for (int n : {0, 2, 10}) {
-      s["continuation"] = {{"runner_ups", n}};
-      EXPECT_EQ(rejection(s), "accepted") << n;
-    }
-    for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(11), nlohmann::json(1.5), nlohmann::json("2")}) {
-      s["continuation"] = {{"runner_ups", bad}};
-      EXPECT_EQ(rejection(s).rfind("continuation.runner_ups: ", 0), 0u) << rejection(s);
-    }
-  }
+  // continuation.runner_ups: further seed-speed optima continued while they are the best known.
+  expect_sweep_continuation_field("runner_ups", {0, 2, 10}, {-1, 11, 1.5, "2"}, "10");
 }
 
 TEST(WalkerJobSpec, PredictorHessianIsPerPointOrPerTry) {
