@@ -9,7 +9,8 @@ SweepFields parse_sweep_fields(const nlohmann::json& spec) {
   SweepFields f;
   if (!spec.contains("continuation")) return f;
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
-  reject_unknown_keys(c, "continuation", {"seed_speeds", "min_trust_region", "corrector_max_iterations", "coarse_points", "runner_ups"});
+  reject_unknown_keys(c, "continuation",
+                      {"seed_speeds", "min_trust_region", "corrector_max_iterations", "coarse_points", "runner_ups"});
   if (c.contains("seed_speeds"))
     f.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
   f.min_trust_region = optional_number(c, "continuation", "min_trust_region", 1e-9, 1e3).value_or(f.min_trust_region);

@@ -3,7 +3,7 @@
 // foot_design): the walker fields (walker_job_spec.hpp) and
 //
 //   "continuation": {"seed_speeds": "0.3:1:2.3", "min_trust_region": 0.002, "corrector_max_iterations": 300,
-//                    "coarse_points": 100, "runner_ups": 2}
+//                    "coarse_points": 100, "runner_ups": 0}
 //
 // the sweeps' multistart speeds (default 0.3, 1.3, 2.3), Delta_min (Table 7.1), the corrector's
 // MaxIter at each continuation point (studies::SpeedSweepOptions::corrector_max_iterations) and the

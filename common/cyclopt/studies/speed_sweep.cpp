@@ -86,6 +86,9 @@ class Sweep {
   void continue_new_optimum(double v, const std::optional<Eigen::VectorXd>& x, SweepStep step);
   // Step 2b: the runner-up optima of the seed multistart m at v, each continued while it is the best known.
   void continue_runner_ups(double v, const nlp::MultistartResult& m);
+  // Opens a curve (origin) through the point x at v and continues it upwards, then downwards; while_best:
+  // each run stops where another curve is at least as good.
+  void open_and_continue(const Eigen::VectorXd& x, double v, const CurveOrigin& origin, bool while_best);
   bool on_known_curve(double v, const Eigen::VectorXd& x, double f) const;
   bool near_known_curve(const CurvePoint& p) const;
   // Grid speed i has no point and curves were opened since its last unreached recovery (or none ran).
@@ -279,22 +282,25 @@ void Sweep::continue_new_optimum(double v, const std::optional<Eigen::VectorXd>&
   if (!x) return;
   nlp::Evaluation e;
   if (!walker::GaitProblem(model_, at_speed(v)).evaluate(*x, false, e).ok || on_known_curve(v, *x, e.objective)) return;
-  const int id = open_curve({step, v});
-  std::deque<Task> queue{{*x, v, 1.0, id, true, false}, {*x, v, -1.0, id, false, false}};
-  run_queue(queue);
+  open_and_continue(*x, v, {step, v}, false);
 }
 
 void Sweep::continue_runner_ups(double v, const nlp::MultistartResult& m) {
   const int count = std::min(o_.runner_ups, static_cast<int>(m.optima.size()) - 1);
+  if (count < 1) return;
+  const double best = m.optima.front().objective;
   for (int k = 1; k <= count && !stopped_ && r_.curves < o_.max_curves; ++k) {
     const nlp::MultistartOptimum& optimum = m.optima[static_cast<std::size_t>(k)];
-    const double best = m.optima.front().objective;
     if (optimum.objective - best > o_.runner_up_margin * std::max(std::abs(best), 1e-12)) break;
     if (on_known_curve(v, optimum.x, optimum.objective)) continue;  // a run from a better optimum passed it
-    const int id = open_curve({SweepStep::seed_multistart, v});
-    std::deque<Task> queue{{optimum.x, v, 1.0, id, true, true}, {optimum.x, v, -1.0, id, false, true}};
-    run_queue(queue);
+    open_and_continue(optimum.x, v, {SweepStep::seed_multistart, v}, true);
   }
+}
+
+void Sweep::open_and_continue(const Eigen::VectorXd& x, double v, const CurveOrigin& origin, bool while_best) {
+  const int id = open_curve(origin);
+  std::deque<Task> queue{{x, v, 1.0, id, true, while_best}, {x, v, -1.0, id, false, while_best}};
+  run_queue(queue);
 }
 
 bool Sweep::on_known_curve(double v, const Eigen::VectorXd& x, double f) const {
@@ -639,9 +645,7 @@ void Sweep::recover(const Target& target) {
   if (found && r_.curves < o_.max_curves) {
     a.found = true;
     a.objective = f;
-    const int id = open_curve({a.step, v});
-    std::deque<Task> queue{{*x, v, 1.0, id, true, true}, {*x, v, -1.0, id, false, true}};
-    run_queue(queue);
+    open_and_continue(*x, v, {a.step, v}, true);
   } else if (target.unreached) {
     std::string& from = tried_from_[target.index];
     from += (from.empty() || curves.empty() ? "" : ", ") + curves;
