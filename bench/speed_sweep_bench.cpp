@@ -87,14 +87,19 @@ int main(int argc, char** argv) {
   }
   bench::print_recoveries(r.recoveries);
   std::printf("\nbest per speed:\n");
-  int found = 0;
+  // A point counts as a KKT point only if its solve converged; the sweep also takes the SQP's
+  // "acceptable" stop (a step below TolStep while feasible: a potential KKT point), named here.
+  int kkt = 0, acceptable = 0;
   for (const BestPoint& b : r.best) {
-    found += b.found;
+    const bool converged = b.found && b.point.corrector.termination == nlp::Termination::converged;
+    kkt += converged;
+    acceptable += b.found && !converged;
     if (b.found)
-      std::printf("  %.1f m/s: curve %d, f_mech %.6f (%s)\n", b.speed, b.point.curve_id, b.point.objective, describe(b).c_str());
+      std::printf("  %.1f m/s: curve %d, f_mech %.6f, %s (%s)\n", b.speed, b.point.curve_id, b.point.objective,
+                  nlp::to_string(b.point.corrector.termination), describe(b).c_str());
     else
       std::printf("  %.1f m/s: none (%s)\n", b.speed, b.reason.c_str());
   }
-  std::printf("%d/%zu speeds with a KKT point\n", found, r.best.size());
+  std::printf("%d/%zu speeds with a KKT point, %d more with an acceptable point only\n", kkt, r.best.size(), acceptable);
   return 0;
 }
