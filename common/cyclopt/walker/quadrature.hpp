@@ -67,39 +67,53 @@ inline std::array<std::array<double, 4>, 4> cubic_lagrange(int o) {
 // int c (or nothing), else the root tau of c in (0, 1) is located in double by bisection and the
 // positive piece of int c is added. The piece's weights are taken at the double tau: since
 // c(tau) = 0, d/dg int_0^tau c = int_0^tau dc/dg exactly, so the derivative of this rule is exact.
+// The rule is linear in g with these double weights, so they are summed per sample first and the
+// integral is one product per sample (for a Dual g: one scaled derivative vector per sample, not
+// four per interval).
 template <class T, class Samples>
 T positive_part_integral(const Samples& g, const T& h) {
   using Basis = std::array<std::array<double, 4>, 4>;
   static const std::array<Basis, 3> basis{detail::cubic_lagrange(0), detail::cubic_lagrange(-1), detail::cubic_lagrange(-2)};
+  // The weights of a whole interval (the piece [0, 1]) per stencil position.
+  static const std::array<std::array<double, 4>, 3> whole = [] {
+    std::array<std::array<double, 4>, 3> w{};
+    for (std::size_t b = 0; b < 3; ++b)
+      for (int k = 0; k < 4; ++k)
+        for (int p = 0; p < 4; ++p) w[b][static_cast<std::size_t>(k)] += basis[b][k][p] / (p + 1);
+    return w;
+  }();
   const int P = static_cast<int>(g.size());
   if (P < 4) throw std::invalid_argument("positive_part_integral: needs P >= 4 grid points");
-  T sum = T(0.0);
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(P);
   for (int i = 0; i + 1 < P; ++i) {
     const int first = std::clamp(i - 1, 0, P - 4);  // stencil first..first+3, nodes at s = first - i ..
-    const Basis& L = basis[static_cast<std::size_t>(i - first)];
+    const std::size_t position = static_cast<std::size_t>(i - first);
+    const Basis& L = basis[position];
     const double a = ad::value(g(i)), b = ad::value(g(i + 1));
     if (a <= 0.0 && b <= 0.0) continue;
-    double lo = 0.0, hi = 1.0;  // the positive piece [lo, hi] in s
-    if (a < 0.0 || b < 0.0) {
-      auto c = [&](double s) {
-        double v = 0.0;
-        for (int k = 0; k < 4; ++k)
-          v += ad::value(g(first + k)) * (L[k][0] + s * (L[k][1] + s * (L[k][2] + s * L[k][3])));
-        return v;
-      };
-      double left = 0.0, right = 1.0;  // c(left) has the sign of a
-      for (int it = 0; it < 60 && right - left > 1e-15; ++it) {
-        const double mid = 0.5 * (left + right);
-        (c(mid) > 0.0) == (a > 0.0) ? left = mid : right = mid;
-      }
-      (a > 0.0 ? hi : lo) = 0.5 * (left + right);
+    if (a >= 0.0 && b >= 0.0) {
+      for (int k = 0; k < 4; ++k) weight(first + k) += whole[position][static_cast<std::size_t>(k)];
+      continue;
     }
-    for (int k = 0; k < 4; ++k) {
-      double w = 0.0;
-      for (int p = 0; p < 4; ++p) w += L[k][p] * (std::pow(hi, p + 1) - std::pow(lo, p + 1)) / (p + 1);
-      sum += w * g(first + k);
+    auto c = [&](double s) {
+      double v = 0.0;
+      for (int k = 0; k < 4; ++k)
+        v += ad::value(g(first + k)) * (L[k][0] + s * (L[k][1] + s * (L[k][2] + s * L[k][3])));
+      return v;
+    };
+    double left = 0.0, right = 1.0;  // c(left) has the sign of a
+    for (int it = 0; it < 60 && right - left > 1e-15; ++it) {
+      const double mid = 0.5 * (left + right);
+      (c(mid) > 0.0) == (a > 0.0) ? left = mid : right = mid;
     }
+    const double tau = 0.5 * (left + right);
+    const double lo = a > 0.0 ? 0.0 : tau, hi = a > 0.0 ? tau : 1.0;  // the positive piece [lo, hi] in s
+    for (int k = 0; k < 4; ++k)
+      for (int p = 0; p < 4; ++p) weight(first + k) += L[k][p] * (std::pow(hi, p + 1) - std::pow(lo, p + 1)) / (p + 1);
   }
+  T sum = T(0.0);
+  for (int i = 0; i < P; ++i)
+    if (weight(i) != 0.0) sum += weight(i) * g(i);
   return sum * h;
 }
 
