@@ -13,7 +13,9 @@ struct CurvePoint {
   double parameter = 0.0;
   int curve_id = 0;
   bool on_grid = false;         // parameter is one of the requested values p_1..p_Q
-  bool converged = false;       // corrector reached a KKT point
+  // The corrector succeeded (SolverSummary::success): a KKT point, or the SQP's "acceptable" stop (a
+  // step below TolStep while feasible); corrector.termination tells which.
+  bool converged = false;
   Eigen::VectorXd x;
   double objective = 0.0;
   nlp::SolverSummary corrector;  // the solve of Algorithm 2 step 19 (step 1 for the first point)
