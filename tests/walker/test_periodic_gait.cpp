@@ -156,6 +156,15 @@ TEST(Quadrature, CorrectedRuleConvergesFasterOnTheGait) {
   const double e_c = std::abs(corrected.floquet - fine.floquet), e_t = std::abs(trapezoid.floquet - fine.floquet);
   std::printf("Lambda error at P = 1600: trapezoid %.2e, corrected %.2e\n", e_t, e_c);
   EXPECT_LT(e_c, 1e-2 * e_t);
+  // f_mech (the positive-part rule) at the sweeps' P = 200: 2.6e-6 against 1.6e-3 relative (README).
+  const GaitEvaluator coarse(testing::reference_model("P2-shoes-left-HMT", 200));
+  const double f_t = coarse.evaluate(ref.start.x, opt).f_mech;
+  opt.quadrature = Quadrature::corrected_trapezoid;
+  const double f_c = coarse.evaluate(ref.start.x, opt).f_mech;
+  const double m_t = std::abs(f_t - fine.f_mech) / fine.f_mech, m_c = std::abs(f_c - fine.f_mech) / fine.f_mech;
+  std::printf("f_mech relative error at P = 200: trapezoid %.2e, corrected %.2e\n", m_t, m_c);
+  EXPECT_LT(m_c, 1e-5);
+  EXPECT_LT(m_c, 1e-2 * m_t);
 }
 
 // f_mech's integrand max(p, 0): sin(3x) + 0.3 on [0, 2] changes sign four times. Exact integral
