@@ -59,6 +59,16 @@ inline std::array<std::array<double, 4>, 4> cubic_lagrange(int o) {
   return c;
 }
 
+// The weight of sample k (its basis row Lk, powers s^0..s^3) in the integral of the cubic over [lo, hi].
+inline double piece_weight(const std::array<double, 4>& Lk, double lo, double hi) {
+  double w = 0.0;
+  for (std::size_t p = 0; p < 4; ++p) {
+    const double e = static_cast<double>(p + 1);
+    w += Lk[p] * (std::pow(hi, e) - std::pow(lo, e)) / e;
+  }
+  return w;
+}
+
 }  // namespace detail
 
 // Integral of max(g, 0) over [theta_0, theta_{P-1}] for samples g_0..g_{P-1} on a uniform grid with
@@ -78,8 +88,7 @@ T positive_part_integral(const Samples& g, const T& h) {
   static const std::array<std::array<double, 4>, 3> whole = [] {
     std::array<std::array<double, 4>, 3> w{};
     for (std::size_t b = 0; b < 3; ++b)
-      for (int k = 0; k < 4; ++k)
-        for (int p = 0; p < 4; ++p) w[b][static_cast<std::size_t>(k)] += basis[b][k][p] / (p + 1);
+      for (std::size_t k = 0; k < 4; ++k) w[b][k] = detail::piece_weight(basis[b][k], 0.0, 1.0);
     return w;
   }();
   const int P = static_cast<int>(g.size());
@@ -108,8 +117,7 @@ T positive_part_integral(const Samples& g, const T& h) {
     }
     const double tau = 0.5 * (left + right);
     const double lo = a > 0.0 ? 0.0 : tau, hi = a > 0.0 ? tau : 1.0;  // the positive piece [lo, hi] in s
-    for (int k = 0; k < 4; ++k)
-      for (int p = 0; p < 4; ++p) weight(first + k) += L[k][p] * (std::pow(hi, p + 1) - std::pow(lo, p + 1)) / (p + 1);
+    for (int k = 0; k < 4; ++k) weight(first + k) += detail::piece_weight(L[static_cast<std::size_t>(k)], lo, hi);
   }
   T sum = T(0.0);
   for (int i = 0; i < P; ++i)
