@@ -2,7 +2,8 @@
 // early: point feet seeded only at 0.6 m/s follow the low-speed curve, whose continuation fails at
 // the minimal step near 0.79 m/s (bench/results/speed_sweep_bench.txt), so the seed's workflow
 // leaves 0.8 and 0.9 m/s without a point. The recovery must give every speed a KKT point, say
-// which step found it, and each point must be a KKT point when solved again from it.
+// which step found it, and each point must be a KKT point when solved again from it. Where it may
+// not open a curve, a speed keeps no point and gets a reason instead.
 #include "cyclopt/studies/speed_sweep.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/solve.hpp"
@@ -18,16 +19,27 @@ using namespace cyclopt;
 using namespace cyclopt::continuation;
 using namespace cyclopt::studies;
 
-TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
-  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
-  const walker::GaitProblemOptions problem{walker::Objective::mechanical, 0.6, walker::Quadrature::trapezoid, {}};
+namespace {
+
+const walker::GaitProblemOptions kProblem{walker::Objective::mechanical, 0.6, walker::Quadrature::trapezoid, {}};
+
+// Point feet over 0.6-0.9 m/s, seeded at 0.6 m/s only, two starts.
+SpeedSweepOptions stopping_early_case() {
   SpeedSweepOptions o;
   o.speeds = {0.6, 0.7, 0.8, 0.9};
   o.seed_speeds = {0.6};
   o.starts = 2;
+  return o;
+}
+
+}  // namespace
+
+TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
+  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
+  SpeedSweepOptions o = stopping_early_case();
   std::vector<SweepProgress> reports;  // on_progress is called one at a time
   o.on_progress = [&](const SweepProgress& p) { reports.push_back(p); };
-  const SpeedSweepResult r = speed_sweep(model, problem, o);
+  const SpeedSweepResult r = speed_sweep(model, kProblem, o);
   for (const ContinuationResult& run : r.runs)
     std::printf("run %.3f -> %.3f (curve %d): %s\n", run.points.front().parameter, run.points.back().parameter,
                 run.points.front().curve_id, run.message.c_str());
@@ -43,7 +55,7 @@ TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
     ASSERT_TRUE(b.found) << b.speed << " m/s: " << b.reason;
     if (b.origin.step != SweepStep::seed_multistart && b.origin.step != SweepStep::jump) ++recovered;
     // Independently: a fresh SQP solve from the stored point stops at once with the same f.
-    walker::GaitProblemOptions at = problem;
+    walker::GaitProblemOptions at = kProblem;
     at.speed = b.speed;
     walker::GaitProblem p(model, at);
     nlp::SolverOptions so = nlp::seed_table_6_2_options();
@@ -90,4 +102,30 @@ TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
   EXPECT_GE(phase_changes, 3);
   EXPECT_EQ(last_reached, 4);
   std::printf("%zu progress reports, %d phase changes\n", reports.size(), phase_changes);
+}
+
+// A KKT point that recovery finds but may not open a curve for (max_curves in use: the seed
+// workflow's one curve) is not shown as found: the speed keeps no point and its reason says why
+// and names the option.
+TEST(SpeedSweepRecovery, ASpeedWithoutACurveKeepsNoPointAndSaysWhy) {
+  const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
+  SpeedSweepOptions o = stopping_early_case();
+  o.max_curves = 1;
+  const SpeedSweepResult r = speed_sweep(model, kProblem, o);
+  ASSERT_EQ(r.best.size(), 4u);
+  EXPECT_EQ(r.curves, 1);
+  EXPECT_TRUE(r.best[0].found);
+  EXPECT_TRUE(r.best[1].found);
+  for (std::size_t i : {2u, 3u}) {
+    const BestPoint& b = r.best[i];
+    EXPECT_FALSE(b.found) << b.speed;
+    EXPECT_NE(b.reason.find("max_curves (1)"), std::string::npos) << b.reason;
+    EXPECT_EQ(describe(b), b.reason);
+  }
+  int unreached_tries = 0;
+  for (const RecoveryAttempt& a : r.recoveries) {
+    EXPECT_FALSE(a.found) << a.speed << " " << a.trigger;
+    unreached_tries += a.trigger == "unreached";
+  }
+  EXPECT_EQ(unreached_tries, 2);  // each once: no curve was opened that could reach it since
 }
