@@ -285,8 +285,8 @@ Agreement agreement_on_random_feet(unsigned seed, double k_min, int wanted) {
 // Acceptance 1 of issue 15 on feet whose transitions the phase grid resolves (k >= 1e-3; the README
 // names k_HM ~ 1e-2 as the limit at P = 200), then the same check down to k = 1e-8, where d/dk of
 // tanh(a/k) cancels terms of size 1/k^2 and both methods lose digits to rounding: reported, with a
-// looser bound. Rounding sets that figure: 5.5e-6 in the x86-64 baseline build, 1.2e-5 with
-// -march=native (CYCLOPT_NATIVE_ARCH: FMA contraction) on the same feet - a wrong derivative is O(1).
+// looser bound. Rounding sets that figure: 5.5e-6 in an SSE2 build, 1.2e-5 with
+// FMA contraction (CYCLOPT_ARCH x86-64-v3 and above) on the same feet - a wrong derivative is O(1).
 TEST(FootDensity, GaitDerivativesWithRespectToFootAndDensityMatchComplexStepOnRandomFeet) {
   const auto t0 = std::chrono::steady_clock::now();
   const Agreement resolved = agreement_on_random_feet(1015, 1e-3, 50);

@@ -123,9 +123,9 @@ GaitEvaluation GaitEvaluator::derivatives(const Eigen::VectorXd& x, const GaitOp
   light.keep_trajectories = false;
   const bool reference = path == DerivativePath::reference;
   // One pass carrying all directions for the default Bezier degree M = 6 (point feet 20, feet 30),
-  // in Dual<N> padded to a multiple of 8 (the padding directions stay zero): with AVX-512
-  // (CYCLOPT_NATIVE_ARCH) each derivative operation is then whole 8-double registers. HMT at
-  // P = 200: 1.6 ms per Jacobian with Dual<32>, 2.7 ms with Dual<30> (bench/results/walker_bench.txt).
+  // in Dual<N> padded to a multiple of 8 (the padding directions stay zero): each derivative
+  // operation is then whole registers (4 doubles with the default x86-64-v3, 8 with AVX-512 in a
+  // CYCLOPT_ARCH=native build).
   // The chunks of the other paths are shared out between two threads when a core is spare (a
   // continuation run with free foot parameters, a multistart's last run: nlp/spare_core.hpp); each
   // chunk is the same pass in either thread, so the Jacobian is bitwise the same. (The one pass is
