@@ -130,7 +130,8 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     // The parsed spec goes to the worker with the job: it is not parsed again.
     const storage::SubmitOutcome out = pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender,
                                                      cost.seconds, cli::git_revision(),
-                                                     service::random_seeds(resolved).dump(), resolved.dump()},
+                                                     service::random_seeds(resolved).dump(), resolved.dump(),
+                                                     cli::build_arch(), cli::build_flags()},
                                                     config_.quota, v);
     if (out.over_quota)
       return reject(msg.request_id, "queue",

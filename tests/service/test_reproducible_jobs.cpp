@@ -42,6 +42,9 @@ TEST_F(ReproducibleJobs, AStoredJobRecordsTheVersionTheSeedsAndTheResolvedSpec) 
   const nlohmann::json job = job_row(client_, ack->job_id);
   EXPECT_EQ(job["program_version"], cli::git_revision());
   EXPECT_NE(job["program_version"], "");
+  EXPECT_EQ(job["isa_level"], cli::build_arch());  // results are reproducible by builds of this level
+  EXPECT_EQ(job["build_flags"], cli::build_flags());
+  EXPECT_NE(std::string(cli::build_flags()).find("-march="), std::string::npos) << cli::build_flags();
   EXPECT_EQ(job["seeds"], (nlohmann::json{{"multistart.seed", 42}}));
   const nlohmann::json& r = job["resolved_spec"];
   std::printf("resolved sweep spec: %s\n", r.dump().c_str());

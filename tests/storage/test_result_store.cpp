@@ -246,7 +246,7 @@ TEST_F(ResultStoreTest, SenderQuotaLimitsQueuedJobsAndTheirEstimatedTime) {
   ResultStore s(path_);
   const SenderQuota quota{3, 100.0};
   auto submit = [&](const std::string& id, const std::string& sender, double seconds) {
-    return s.submit({id, "walker", "optimise", "{}", sender, seconds, "", "{}", ""}, quota);
+    return s.submit({id, "walker", "optimise", "{}", sender, seconds, "", "{}", "", "", ""}, quota);
   };
   EXPECT_FALSE(submit("a1", "alice", 10).over_quota);
   EXPECT_FALSE(submit("a2", "alice", 10).over_quota);

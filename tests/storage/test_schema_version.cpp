@@ -108,6 +108,8 @@ TEST_F(SchemaVersionTest, AVersionTwoFileGetsTheReproducibilityColumns) {
     c.exec("ALTER TABLE jobs DROP COLUMN program_version");
     c.exec("ALTER TABLE jobs DROP COLUMN seeds_json");
     c.exec("ALTER TABLE jobs DROP COLUMN resolved_spec_json");
+    c.exec("ALTER TABLE jobs DROP COLUMN isa_level");
+    c.exec("ALTER TABLE jobs DROP COLUMN build_flags");
   }
   set_version("2");
   EXPECT_NE(open_error(OpenMode::read_only).find("schema version 2"), std::string::npos);
@@ -120,7 +122,7 @@ TEST_F(SchemaVersionTest, AVersionTwoFileGetsTheReproducibilityColumns) {
     const nlohmann::json row = run_query(s, query_for("job", 1)).rows.at(0);
     EXPECT_EQ(row["resolved_spec"], nullptr);
     EXPECT_EQ(row["seeds"], nlohmann::json::object());
-    Submission sub{"new", "walker", "multistart", "{}", "", 0.0, "abc1234", R"({"multistart.seed": 3})", R"({"speed": 1})"};
+    Submission sub{"new", "walker", "multistart", "{}", "", 0.0, "abc1234", R"({"multistart.seed": 3})", R"({"speed": 1})", "", ""};
     const auto id = s.submit(sub, SenderQuota{}).job_id;
     const JobRecord j = *s.job(id);
     EXPECT_EQ(j.program_version, "abc1234");
@@ -129,6 +131,33 @@ TEST_F(SchemaVersionTest, AVersionTwoFileGetsTheReproducibilityColumns) {
     EXPECT_EQ(new_row["program_version"], "abc1234");
     EXPECT_EQ(new_row["seeds"], (nlohmann::json{{"multistart.seed", 3}}));
     EXPECT_EQ(new_row["resolved_spec"], (nlohmann::json{{"speed", 1}}));
+  }
+  EXPECT_EQ(version(), std::to_string(kSchemaVersion));
+}
+
+// Version 4 added the build's instruction-set level and flags (a job's results are reproducible by
+// builds of its level): a version-3 file gets them empty, new jobs store them.
+TEST_F(SchemaVersionTest, AVersionThreeFileGetsTheBuildColumns) {
+  {
+    ResultStore s(path_);
+    s.submit("old", "walker", "optimise", "{}");
+  }
+  {
+    Connection c(path_, false);
+    c.exec("ALTER TABLE jobs DROP COLUMN isa_level");
+    c.exec("ALTER TABLE jobs DROP COLUMN build_flags");
+  }
+  set_version("3");
+  EXPECT_NE(open_error(OpenMode::read_only).find("schema version 3"), std::string::npos);
+  {
+    ResultStore s(path_);
+    EXPECT_EQ(s.job(1)->isa_level, "");
+    EXPECT_EQ(s.job(1)->build_flags, "");
+    Submission sub{"new", "walker", "optimise", "{}", "", 0.0, "abc1234", "{}", "{}", "x86-64-v3", "GNU 12.2.0 -O3"};
+    const auto id = s.submit(sub, SenderQuota{}).job_id;
+    const nlohmann::json row = run_query(s, query_for("job", id)).rows.at(0);
+    EXPECT_EQ(row["isa_level"], "x86-64-v3");
+    EXPECT_EQ(row["build_flags"], "GNU 12.2.0 -O3");
   }
   EXPECT_EQ(version(), std::to_string(kSchemaVersion));
 }

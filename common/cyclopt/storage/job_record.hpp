@@ -30,6 +30,8 @@ struct JobRecord {
   std::string program_version;     // git revision of the accepting server ("" before schema 3)
   std::string seeds_json = "{}";   // random seeds by field of the resolved spec
   std::string resolved_spec_json;  // the spec with defaults filled in ("" before schema 3)
+  std::string isa_level;           // instruction-set level of the accepting build ("" before schema 4)
+  std::string build_flags;         // its compiler and code-generation flags ("" before schema 4)
 };
 
 }  // namespace cyclopt::storage

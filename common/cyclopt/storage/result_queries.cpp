@@ -151,6 +151,8 @@ nlohmann::json to_json(const JobRecord& job, bool with_spec) {
                       {"publish_seconds", job.publish_seconds},
                       {"error", utf8(job.error)},
                       {"program_version", utf8(job.program_version)},
+                      {"isa_level", utf8(job.isa_level)},
+                      {"build_flags", utf8(job.build_flags)},
                       {"seeds", json_cell(job.seeds_json, "seeds_json")}};
   if (with_spec) {
     j["spec"] = json_cell(job.spec_json, "spec_json");

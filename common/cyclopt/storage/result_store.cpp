@@ -21,7 +21,7 @@ constexpr const char* kJobColumns =
     "j.id, j.request_id, j.scene, j.task, j.spec_json, j.state, j.cancel_requested, j.attempts, j.submitted_at, "
     "j.started_at, j.finished_at, j.points_total, "
     "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error, "
-    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json";
+    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json, j.isa_level, j.build_flags";
 
 std::optional<double> optional_real(const Statement& s, int col) {
   return s.is_null(col) ? std::nullopt : std::optional<double>(s.real(col));
@@ -49,6 +49,8 @@ JobRecord read_job(const Statement& s) {
   r.program_version = s.text(17);
   r.seeds_json = s.text(18);
   r.resolved_spec_json = s.text(19);
+  r.isa_level = s.text(20);
+  r.build_flags = s.text(21);
   return r;
 }
 
@@ -92,8 +94,8 @@ void check_integrity(Connection& db, const std::string& path) {
                        "sqlite3 '" + path + "' .recover");
 }
 
-// Columns added while schema version 1 was deployed (migration to version 2), and those of version
-// 3: added to older files.
+// Columns added while schema version 1 was deployed (migration to version 2), and those of versions
+// 3 and 4: added to older files.
 void add_missing_columns(Connection& db) {
   std::set<std::string> columns;
   {
@@ -107,6 +109,8 @@ void add_missing_columns(Connection& db) {
   if (!columns.count("seeds_json")) db.exec("ALTER TABLE jobs ADD COLUMN seeds_json TEXT NOT NULL DEFAULT '{}'");
   if (!columns.count("resolved_spec_json"))
     db.exec("ALTER TABLE jobs ADD COLUMN resolved_spec_json TEXT NOT NULL DEFAULT ''");
+  if (!columns.count("isa_level")) db.exec("ALTER TABLE jobs ADD COLUMN isa_level TEXT NOT NULL DEFAULT ''");
+  if (!columns.count("build_flags")) db.exec("ALTER TABLE jobs ADD COLUMN build_flags TEXT NOT NULL DEFAULT ''");
   std::set<std::string> solution_columns;
   {
     Statement q(db, "PRAGMA table_info(solutions)");
@@ -186,7 +190,8 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
   }
   Statement ins(db_,
                 "INSERT INTO jobs (request_id, scene, task, spec_json, submitted_at, sender, estimated_seconds, "
-                "program_version, seeds_json, resolved_spec_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                "program_version, seeds_json, resolved_spec_json, isa_level, build_flags) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   ins.bind(1, sub.request_id)
       .bind(2, sub.scene)
       .bind(3, sub.task)
@@ -197,6 +202,8 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
       .bind(8, sub.program_version)
       .bind(9, sub.seeds_json)
       .bind(10, sub.resolved_spec_json)
+      .bind(11, sub.isa_level)
+      .bind(12, sub.build_flags)
       .run();
   out.job_id = db_.last_insert_rowid();
   add_event_locked(out.job_id, "submitted", "request " + sub.request_id);
@@ -206,7 +213,7 @@ SubmitOutcome ResultStore::submit(const Submission& sub, const SenderQuota& quot
 
 SubmitOutcome ResultStore::submit(const std::string& request_id, const std::string& scene, const std::string& task,
                                   const std::string& spec_json) {
-  return submit({request_id, scene, task, spec_json, "", 0.0, "", "{}", ""},
+  return submit({request_id, scene, task, spec_json, "", 0.0, "", "{}", "", "", ""},
                 {std::numeric_limits<int>::max(), std::numeric_limits<double>::infinity()});
 }
 

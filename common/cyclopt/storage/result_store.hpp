@@ -37,10 +37,13 @@ struct Submission {
   std::string sender;
   double estimated_seconds = 0.0;  // the job's cost estimate (service/job_cost.hpp)
   // What reproduces the job (results_schema.hpp): the accepting build's git revision, the random
-  // seeds by field ({"multistart.seed": 1}) and the spec with its defaults filled in.
+  // seeds by field ({"multistart.seed": 1}), the spec with its defaults filled in, and the build's
+  // instruction-set level and compiler flags.
   std::string program_version;
   std::string seeds_json = "{}";
   std::string resolved_spec_json;
+  std::string isa_level;
+  std::string build_flags;
 };
 
 // Per-sender limits on queued (not yet running) jobs; checked in the submission's transaction.

@@ -25,7 +25,9 @@ CREATE TABLE IF NOT EXISTS jobs (
   points_converged INTEGER,
   program_version TEXT NOT NULL DEFAULT '',
   seeds_json TEXT NOT NULL DEFAULT '{}',
-  resolved_spec_json TEXT NOT NULL DEFAULT ''
+  resolved_spec_json TEXT NOT NULL DEFAULT '',
+  isa_level TEXT NOT NULL DEFAULT '',
+  build_flags TEXT NOT NULL DEFAULT ''
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs (state, id);
 CREATE TABLE IF NOT EXISTS events (

@@ -1,5 +1,5 @@
 #pragma once
-// The SQLite schema of the results database (version 3, kSchemaVersion). The database runs in WAL mode with
+// The SQLite schema of the results database (version 4, kSchemaVersion). The database runs in WAL mode with
 // synchronous=NORMAL and foreign keys on: every committed point survives a kill -9 of the server.
 //
 //   jobs          one row per accepted submission; also the durable queue.
@@ -28,6 +28,11 @@
 //                                         spec: {"multistart.seed": 1} ('{}': none)
 //     resolved_spec_json TEXT             the spec with every default filled in
 //                                         (service/resolved_spec.hpp; '' before version 3)
+//     isa_level     TEXT                  the instruction-set level of that build (CMake
+//                                         CYCLOPT_ARCH, "x86-64-v3" by default): a job's results
+//                                         are bitwise reproducible by a build of the same level
+//     build_flags   TEXT                  the compiler and its code-generation flags
+//                                         ('' for both before version 4)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
 //                 requeued, cancel_requested, done, failed, cancelled, interrupted
 //   curves        (id, job_id, curve_index, name, parameter_name), UNIQUE(job_id, curve_index):
@@ -50,8 +55,9 @@
 // estimated_seconds, points_converged, solutions.required, checkpoints, state 'incomplete');
 // 2 the same tables, with values_json and the "json" trajectories holding the records of the
 // result contract (records/: gait, solver, walker point, foot comparison) and the version checked
-// on open; 3 adds jobs.program_version, seeds_json and resolved_spec_json (reproducible results).
-// Migrating adds the columns an older file lacks and records version 3.
+// on open; 3 adds jobs.program_version, seeds_json and resolved_spec_json (reproducible results); 4
+// adds jobs.isa_level and build_flags. Migrating adds the columns an older file lacks and records
+// the current version.
 //
 // Example queries: README.md, section "The service".
 
@@ -59,7 +65,7 @@
 
 namespace cyclopt::storage {
 
-inline constexpr int kSchemaVersion = 3;
+inline constexpr int kSchemaVersion = 4;
 
 // DDL creating every table and index (IF NOT EXISTS, so it is idempotent).
 std::string_view results_schema_sql();
