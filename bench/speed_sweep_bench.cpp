@@ -14,7 +14,8 @@
 // per try as Algorithm 2 (ContinuationOptions::reuse_predictor_hessian false), trivial gives the corrector W_1 of
 // (6.24); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
-// recovery (R1-R3) off.
+// recovery (R1-R3) off. Options anywhere on the line: --seeds=1,2,3 (one search per seed,
+// SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8).
 #include "bench_foot.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/service/walker_job_spec.hpp"
@@ -28,7 +29,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <map>
+#include <vector>
 #include <string>
 
 using namespace cyclopt;
@@ -74,8 +77,30 @@ void print_fine_grid_errors(const walker::WalkerModel<double>& model, const walk
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc_in, char** argv_in) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  // --seeds= and --closure= anywhere; the rest are positional.
+  std::vector<char*> positional;
+  std::vector<std::uint64_t> seeds{1};
+  int closure_passes = EnvelopeClosureOptions{}.max_passes;
+  for (int i = 0; i < argc_in; ++i) {
+    const std::string a = argv_in[i];
+    if (a.rfind("--seeds=", 0) == 0) {
+      seeds.clear();
+      std::size_t at = 8;
+      while (at < a.size()) {
+        const std::size_t comma = a.find(',', at);
+        seeds.push_back(std::stoull(a.substr(at, comma - at)));
+        at = comma == std::string::npos ? a.size() : comma + 1;
+      }
+    } else if (a.rfind("--closure=", 0) == 0) {
+      closure_passes = std::atoi(a.c_str() + 10);
+    } else {
+      positional.push_back(argv_in[i]);
+    }
+  }
+  const int argc = static_cast<int>(positional.size());
+  char** argv = positional.data();
   const std::string foot_name = argc > 1 ? argv[1] : "point";
   const int starts = argc > 2 ? std::atoi(argv[2]) : 4;
   const double budget = argc > 3 ? std::atof(argv[3]) : 600.0;
@@ -94,6 +119,9 @@ int main(int argc, char** argv) {
   o.speeds = service::parse_value_range("0.3:0.1:2.3", "speeds", service::kMinWalkingSpeed, service::kMaxWalkingSpeed);
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
+  o.seeds = seeds;
+  o.closure.enabled = closure_passes > 0;
+  o.closure.max_passes = std::max(closure_passes, 1);
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
   if (argc > 8 && std::string(argv[8]) == "qp-per-try")  // the QP predictor with two (6.24) per try (Algorithm 2)
     o.continuation.reuse_predictor_hessian = false;
@@ -143,6 +171,30 @@ int main(int argc, char** argv) {
       std::printf("  %.1f m/s: none (%s)\n", b.speed, b.reason.c_str());
   }
   std::printf("%d/%zu speeds with a KKT point, %d more with an acceptable point only\n", kkt, r.best.size(), acceptable);
+  std::printf("closure: %s, %d solves, %.1f s\n", describe(r.closure).c_str(), r.closure.solves, r.closure.seconds);
+  double mean = 0.0;
+  int found = 0;
+  for (const BestPoint& b : r.best)
+    if (b.found) mean += b.point.objective, ++found;
+  std::printf("mean f over %d speeds: %.6f (the envelope of %zu search%s)\n", found, found ? mean / found : 0.0, r.searches.size(),
+              r.searches.size() == 1 ? "" : "es");
+  if (r.searches.size() > 1) {
+    std::vector<double> means;
+    for (const SeedSearch& s : r.searches) {
+      double m = 0.0;
+      int k = 0;
+      for (const BestPoint& b : s.best)
+        if (b.found) m += b.point.objective, ++k;
+      means.push_back(k ? m / k : 0.0);
+      std::printf("  seed %llu: mean f %.6f over %d speeds, %s, %.1f s\n", static_cast<unsigned long long>(s.seed), means.back(), k,
+                  describe(s.closure).c_str(), s.seconds);
+    }
+    std::printf("spread of the seeds' means (max - min) / min: %.2f %%\n",
+                100.0 * (*std::max_element(means.begin(), means.end()) / *std::min_element(means.begin(), means.end()) - 1.0));
+    std::printf("per speed spread between the seeds' envelopes:");
+    for (std::size_t i = 0; i < r.seed_spread.size(); ++i) std::printf(" %.1f:%.1f%%", r.best[i].speed, 100.0 * r.seed_spread[i]);
+    std::printf("\n");
+  }
   print_fine_grid_errors(model, po, r);
   return 0;
 }

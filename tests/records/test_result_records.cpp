@@ -188,6 +188,7 @@ TEST(ResultRecords, FootComparisonRecordsRoundTrip) {
   s.sweep_seconds = 12.5;
   s.saving = 0.4;
   s.reference_f_mech = 0.052;
+  s.seed_spread = 0.004;
   EXPECT_EQ(round_trip(s), s);
   ComparedSpeedRecord missing;
   missing.reason = "no compared foot has a point at this speed";
@@ -217,6 +218,10 @@ TEST(ResultRecords, FootComparisonRecordsRoundTrip) {
   other.envelope_saving.reset();
   other.envelope_common_speeds.reset();
   other.comparison_seconds.reset();
+  EXPECT_EQ(round_trip(other), other);
+  other.seed_savings = {0.41, 0.43, 0.40};  // three seeds' searches
+  other.rank = 2;
+  other.order_held = false;
   EXPECT_EQ(round_trip(other), other);
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -55,6 +56,46 @@ TEST(FootComparison, SavingsAndEnvelopeOverTheSharedSpeeds) {
   EXPECT_GT(r.feet[1].saving, r.feet[2].saving);
   EXPECT_EQ(r.best_mean_foot, 2);
   EXPECT_THROW(summarise_feet({0.5}, {summary("point", {0.2})}, 1), std::invalid_argument);
+}
+
+// Three seeds (SpeedSweepOptions::seeds): per seed, the saving of that seed's search of a foot
+// against that seed's search of the reference; the ranking by the feet's own (best-over-seeds)
+// saving; order_held where a foot beat the next-ranked one with every seed.
+TEST(FootComparison, TheRankingSaysWhereEverySeedAgrees) {
+  auto seeded = [](const std::string& name, std::vector<std::vector<double>> per_seed) {
+    std::vector<double> best = per_seed.front();
+    for (const auto& f : per_seed)
+      for (std::size_t i = 0; i < best.size(); ++i) best[i] = std::min(best[i], f[i]);
+    FootSweepSummary s = summary(name, best);
+    s.seeds = {1, 2, 3};
+    s.seed_f_mech = std::move(per_seed);
+    return s;
+  };
+  const FootComparisonResult r = summarise_feet(
+      {1.0, 2.0},
+      {seeded("point", {{0.4, 0.6}, {0.4, 0.6}, {0.4, 0.6}}),
+       seeded("A", {{0.10, 0.30}, {0.10, 0.30}, {0.10, 0.30}}),     // saving 60 % with every seed
+       seeded("B", {{0.20, 0.30}, {0.21, 0.30}, {0.11, 0.30}}),     // 50, 49, 59 %; best of the seeds 59 %
+       seeded("C", {{0.19, 0.30}, {0.19, 0.30}, {0.19, 0.30}})},    // 51 %: above B with seeds 1 and 2
+      0);
+  EXPECT_EQ(r.ranking, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(r.feet[1].rank, 0);
+  EXPECT_EQ(r.feet[0].rank, -1);
+  ASSERT_EQ(r.feet[2].seed_savings.size(), 3u);
+  EXPECT_NEAR(r.feet[2].seed_savings[0], 1.0 - 0.25 / 0.5, 1e-15);
+  EXPECT_NEAR(r.feet[2].seed_savings[1], 1.0 - 0.255 / 0.5, 1e-15);
+  EXPECT_NEAR(r.feet[2].saving, 1.0 - 0.205 / 0.5, 1e-15);  // the best of the seeds at each speed
+  EXPECT_NEAR(spread(r.feet[2].seed_savings), (1.0 - 0.205 / 0.5) - (1.0 - 0.255 / 0.5), 1e-15);
+  ASSERT_TRUE(r.feet[1].order_held.has_value());
+  EXPECT_TRUE(*r.feet[1].order_held);   // A above B with every seed
+  ASSERT_TRUE(r.feet[2].order_held.has_value());
+  EXPECT_FALSE(*r.feet[2].order_held);  // B above C with seed 3 only
+  EXPECT_FALSE(r.feet[3].order_held.has_value());  // the last
+  EXPECT_FALSE(r.feet[0].order_held.has_value());  // the reference
+  // One seed: no verdict.
+  const FootComparisonResult one = summarise_feet({1.0}, {summary("point", {0.4}), summary("A", {0.1}), summary("B", {0.2})}, 0);
+  EXPECT_FALSE(one.feet[1].order_held.has_value());
+  EXPECT_TRUE(std::isnan(spread(one.feet[1].seed_savings)));
 }
 
 TEST(FootComparison, PointFeetAgainstARollingFootAtTwoSpeeds) {

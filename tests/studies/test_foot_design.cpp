@@ -160,7 +160,7 @@ FootDesignOptions runnable() {
   // 0.0375 on it and 0.0545 on 4P. These tests are about the study's flow, not its resolution.
   o.resolution_tolerance = 1.0;
   o.sweep.starts = 1;
-  o.sweep.seed = 2;
+  o.sweep.seeds = {2};
   o.sweep.scale = 0.02;
   o.sweep.seed_speeds = {2.3};
   o.sweep.continuation.min_trust_region = 0.05;

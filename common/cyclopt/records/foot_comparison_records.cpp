@@ -23,6 +23,7 @@ void to_json(nlohmann::json& j, const ComparedSpeedRecord& s) {
   put_finite(j, "sweep_seconds", s.sweep_seconds);
   put_finite(j, "saving", s.saving);
   put_finite(j, "reference_f_mech", s.reference_f_mech);
+  put_finite(j, "seed_spread", s.seed_spread);
 }
 
 void from_json(const nlohmann::json& j, ComparedSpeedRecord& s) {
@@ -35,6 +36,7 @@ void from_json(const nlohmann::json& j, ComparedSpeedRecord& s) {
   s.sweep_seconds = optional_number(j, r, "sweep_seconds").value_or(kUnset);
   s.saving = optional_number(j, r, "saving").value_or(kUnset);
   s.reference_f_mech = optional_number(j, r, "reference_f_mech").value_or(kUnset);
+  s.seed_spread = optional_number(j, r, "seed_spread").value_or(kUnset);
 }
 
 void to_json(nlohmann::json& j, const ComparedFootRecord& f) {
@@ -52,6 +54,12 @@ void to_json(nlohmann::json& j, const ComparedFootRecord& f) {
   if (f.envelope_saving) j["envelope_saving"] = finite_or_null(*f.envelope_saving);
   if (f.envelope_common_speeds) j["envelope_common_speeds"] = *f.envelope_common_speeds;
   if (f.comparison_seconds) j["comparison_seconds"] = *f.comparison_seconds;
+  if (!f.seed_savings.empty()) {
+    j["seed_savings"] = nlohmann::json::array();
+    for (double s : f.seed_savings) j["seed_savings"].push_back(finite_or_null(s));
+  }
+  if (f.rank) j["rank"] = *f.rank;
+  if (f.order_held) j["order_held"] = *f.order_held;
 }
 
 void from_json(const nlohmann::json& j, ComparedFootRecord& f) {
@@ -71,6 +79,9 @@ void from_json(const nlohmann::json& j, ComparedFootRecord& f) {
   if (j.contains("envelope_saving")) f.envelope_saving = number(j, r, "envelope_saving");
   if (j.contains("envelope_common_speeds")) f.envelope_common_speeds = integer(j, r, "envelope_common_speeds");
   if (j.contains("comparison_seconds")) f.comparison_seconds = number(j, r, "comparison_seconds");
+  if (j.contains("seed_savings")) f.seed_savings = numbers(j, r, "seed_savings");
+  if (j.contains("rank")) f.rank = integer(j, r, "rank");
+  if (j.contains("order_held")) f.order_held = boolean(j, r, "order_held");
 }
 
 }  // namespace cyclopt::records

@@ -22,6 +22,9 @@ struct ComparedSpeedRecord {
   double sweep_seconds = kUnset;        // wall time of the foot's sweep
   double saving = kUnset;               // curve 0: 1 - f_mech / reference_f_mech
   double reference_f_mech = kUnset;     // curve 0: the reference foot's f_mech at this speed
+  // With several seeds: (max - min) / min of f_mech over the seeds' own searches (NaN: a search
+  // has no point here, or one seed).
+  double seed_spread = kUnset;
   bool operator==(const ComparedSpeedRecord&) const = default;
 };
 
@@ -38,6 +41,12 @@ struct ComparedFootRecord {
   std::optional<double> envelope_saving;
   std::optional<int> envelope_common_speeds;
   std::optional<double> comparison_seconds;
+  // With several seeds (studies/foot_comparison.hpp): the saving of each seed's own searches, the
+  // rank by saving (0: best; the reference has none) and whether the foot beat the next-ranked one
+  // with every seed (absent for the last, the reference, a single seed).
+  std::vector<double> seed_savings;
+  std::optional<int> rank;
+  std::optional<bool> order_held;
   bool operator==(const ComparedFootRecord&) const = default;
 };
 

@@ -188,6 +188,14 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       if (std::isfinite(ref) && ref > 0.0) c.saving = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
     }
     c.reference_f_mech = ref;
+    if (best >= 0) {  // the spread of the best foot's own searches at this speed
+      const studies::FootSweepSummary& s = r.feet[static_cast<std::size_t>(best)];
+      std::vector<double> at_speed;
+      for (const std::vector<double>& f : s.seed_f_mech) at_speed.push_back(f.at(static_cast<std::size_t>(i)));
+      const double width = studies::spread(at_speed);  // NaN unless every search has a point here
+      const double lo = *std::min_element(at_speed.begin(), at_speed.end());
+      if (std::isfinite(width) && lo > 0.0) c.seed_spread = width / lo;
+    }
     p.values.update(nlohmann::json(c));
     ctx.store_point(p);
   }
@@ -209,6 +217,9 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
     f.best_fitted = k == r.best_mean_foot;
     f.sweep_seconds = s.seconds;
     f.curves = s.curves;
+    if (s.seed_savings.size() > 1) f.seed_savings = s.seed_savings;
+    if (s.rank >= 0) f.rank = s.rank;
+    f.order_held = s.order_held;
     f.foot_spec = io::to_json(job.feet[static_cast<std::size_t>(k)]);
     if (k == 0) {
       f.envelope_saving = r.envelope_saving;

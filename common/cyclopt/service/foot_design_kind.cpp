@@ -299,7 +299,7 @@ studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   o.densities = job_.densities;
   o.design_speed = job_.design_speed;
   o.starts = job_.walker.starts;
-  o.seed = job_.walker.seed;
+  o.seed = job_.walker.seeds.front();  // the design multistart's; the sweeps search once per seed
   o.scale = job_.walker.scale;
   o.foot_scale = job_.foot_scale;
   o.bounds = *job_.walker.problem.design_bounds;

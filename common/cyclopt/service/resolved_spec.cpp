@@ -10,7 +10,7 @@ void collect_seeds(const nlohmann::json& j, const std::string& path, nlohmann::j
   if (!j.is_object()) return;
   for (const auto& [key, value] : j.items()) {
     const std::string field = path.empty() ? key : path + "." + key;
-    if (key == "seed" && value.is_number_integer())
+    if ((key == "seed" && value.is_number_integer()) || (key == "seeds" && value.is_array()))
       out[field] = value;
     else
       collect_seeds(value, field, out);

@@ -10,7 +10,8 @@
 //                  foot_design (start foot, free parameters, bounds, densities, sweep fields),
 //                  foot_fit (trials, toe_bound), giant_swing (giant_swing_job_spec.hpp: every
 //                  option of the method, solver). Validated and resolved again, it is itself.
-//   seeds          every field named "seed" in the resolved spec, by path: {"multistart.seed": 1}
+//   seeds          every field named "seed" or "seeds" in the resolved spec, by path: {"multistart.seed": 1},
+//                  {"multistart.seeds": [1, 2, 3]}
 //                  (a kind keeps its random seeds in fields of that name).
 
 #include "cyclopt/service/job_spec.hpp"

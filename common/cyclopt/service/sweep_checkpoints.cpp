@@ -77,7 +77,8 @@ continuation::CurvePoint curve_point_from_json(const json& j) {
 }
 
 json best_to_json(const studies::BestPoint& b) {
-  json j = {{"speed", b.speed}, {"found", b.found}, {"reason", b.reason}};
+  json j = {{"speed", b.speed}, {"found", b.found}, {"reason", b.reason}, {"closure_passes", b.closure_passes},
+            {"closure_pass", b.closure_pass}, {"seed", b.seed}};
   if (b.found) {
     j["point"] = curve_point_to_json(b.point);
     j["origin"] = {{"step", static_cast<int>(b.origin.step)}, {"speed", b.origin.speed}};
@@ -90,10 +91,13 @@ studies::BestPoint best_from_json(const json& j) {
   b.speed = number(j.at("speed"));
   b.found = j.at("found").get<bool>();
   b.reason = j.at("reason").get<std::string>();
+  b.closure_passes = j.value("closure_passes", 0);  // absent in checkpoints written before the closure
+  b.closure_pass = j.value("closure_pass", 0);
+  b.seed = j.value("seed", std::uint64_t{0});
   if (b.found) {
     b.point = curve_point_from_json(j.at("point"));
     const int step = j.at("origin").at("step").get<int>();
-    if (step < 0 || step > static_cast<int>(studies::SweepStep::gait_multistart))
+    if (step < 0 || step > static_cast<int>(studies::SweepStep::closure))
       throw std::out_of_range("origin.step " + std::to_string(step) + " is no sweep step");
     b.origin = {static_cast<studies::SweepStep>(step), number(j.at("origin").at("speed"))};
   }
@@ -192,8 +196,9 @@ studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix) 
 json foot_sweep_to_json(const studies::FootSweepSummary& s) {
   json best = json::array();
   for (const studies::BestPoint& b : s.best) best.push_back(best_to_json(b));
-  return {{"name", s.name},         {"best", best},       {"f_mech", s.f_mech}, {"speeds_found", s.speeds_found},
-          {"seconds", s.seconds},   {"curves", s.curves}, {"stopped", s.stopped}};
+  return {{"name", s.name},       {"best", best},       {"f_mech", s.f_mech},   {"speeds_found", s.speeds_found},
+          {"seconds", s.seconds}, {"curves", s.curves}, {"stopped", s.stopped}, {"seeds", s.seeds},
+          {"seed_f_mech", s.seed_f_mech}};
 }
 
 studies::FootSweepSummary foot_sweep_from_json(const json& j) {
@@ -205,6 +210,15 @@ studies::FootSweepSummary foot_sweep_from_json(const json& j) {
   s.seconds = number(j.at("seconds"));
   s.curves = j.at("curves").get<int>();
   s.stopped = j.at("stopped").get<bool>();
+  // Checkpoints written before the searches per seed: one search, its f_mech the foot's.
+  s.seeds = j.contains("seeds") ? j["seeds"].get<std::vector<std::uint64_t>>() : std::vector<std::uint64_t>{1};
+  if (j.contains("seed_f_mech"))
+    for (const json& per_seed : j["seed_f_mech"]) {
+      s.seed_f_mech.emplace_back();
+      for (const json& f : per_seed) s.seed_f_mech.back().push_back(number(f));
+    }
+  else
+    s.seed_f_mech = {s.f_mech};
   return s;
 }
 

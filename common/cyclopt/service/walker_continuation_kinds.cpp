@@ -33,6 +33,7 @@ struct ContinuationJob {
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};
   int coarse_points = studies::SpeedSweepOptions{}.coarse_points;  // a sweep's multistarts
   int runner_ups = studies::SpeedSweepOptions{}.runner_ups;        // a sweep's seed-speed optima continued
+  int closure_passes = studies::EnvelopeClosureOptions{}.max_passes;  // a sweep's closure (0: off)
 };
 
 ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJobFields& common) {
@@ -44,7 +45,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
   const nlohmann::json& c = object_value(spec["continuation"], "continuation");
   reject_unknown_keys(c, "continuation",
                       {"predictor", "predictor_hessian", "fixed_step", "min_trust_region", "max_trust_region", "parameter",
-                       "values", "seed_speeds", "coarse_points", "runner_ups"});
+                       "values", "seed_speeds", "coarse_points", "runner_ups", "closure_passes"});
   if (c.contains("predictor"))
     j.options.predictor = continuation::parse_predictor(enum_value(c["predictor"], "continuation.predictor", continuation::predictor_names()));
   if (c.contains("predictor_hessian"))
@@ -59,6 +60,7 @@ ContinuationJob parse_continuation_job(const nlohmann::json& spec, const CommonJ
     j.seed_speeds = parse_value_range(c["seed_speeds"], "continuation.seed_speeds", kMinWalkingSpeed, kMaxWalkingSpeed);
   j.coarse_points = parse_coarse_points(c, j.coarse_points);
   j.runner_ups = parse_runner_ups(c, j.runner_ups);
+  j.closure_passes = parse_closure_passes(c, j.closure_passes);
   if (c.contains("parameter")) {
     std::vector<std::string> names = walker::model_parameter_names(j.walker.model());
     names.insert(names.begin(), "speed");
@@ -93,7 +95,9 @@ nlohmann::json continuation_job_json(const ContinuationJob& j, bool sweep) {
                       {"max_trust_region", j.options.max_trust_region},
                       {"parameter", j.parameter}};
   if (j.parameter != "speed") c["values"] = j.values;
-  if (sweep) c["seed_speeds"] = j.seed_speeds, c["coarse_points"] = j.coarse_points, c["runner_ups"] = j.runner_ups;
+  if (sweep)
+    c["seed_speeds"] = j.seed_speeds, c["coarse_points"] = j.coarse_points, c["runner_ups"] = j.runner_ups,
+    c["closure_passes"] = j.closure_passes;
   r["continuation"] = c;
   return r;
 }
@@ -162,7 +166,9 @@ void run_sweep(const ContinuationJob& job, JobContext& ctx) {
   so.coarse_points = job.coarse_points;
   so.runner_ups = job.runner_ups;
   so.starts = job.walker.starts;
-  so.seed = job.walker.seed;
+  so.seeds = job.walker.seeds;
+  so.closure.max_passes = std::max(job.closure_passes, 1);
+  so.closure.enabled = job.closure_passes > 0;
   so.scale = job.walker.scale;
   so.continuation = job.options;
   PhaseProgress progress(ctx, {.points_total = static_cast<int>(so.speeds.size()), .message = "speed sweep"});
@@ -191,6 +197,10 @@ void run_sweep(const ContinuationJob& job, JobContext& ctx) {
     }
     p.values["sweep_seconds"] = r.seconds;
     p.values["curves"] = r.curves;
+    // How sure the point is: the closure's passes here, and the spread between the seeds' searches.
+    p.values["closure"] = studies::describe(r.closure);
+    p.values["closure_passes"] = b.closure_passes;
+    if (std::isfinite(r.seed_spread[i])) p.values["seed_spread"] = r.seed_spread[i];
     // This attempt's work: what it solved and what it took over from earlier attempts.
     p.values["attempt"] = {{"multistart_solves", r.multistart_solves}, {"resumed_solves", r.resumed_solves},
                            {"computed_runs", r.computed_runs}, {"resumed_runs", r.resumed_runs}};

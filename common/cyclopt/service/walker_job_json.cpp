@@ -26,7 +26,13 @@ nlohmann::json walker_job_json(const WalkerJob& job, bool sweep, bool random_sta
   }
   if (job.start) j["start"] = std::vector<double>(job.start->data(), job.start->data() + job.start->size());
   j["solver"] = solver_json(job.solver);
-  if (random_starts) j["multistart"] = {{"starts", job.starts}, {"seed", job.seed}, {"scale", job.scale}};
+  if (random_starts) {
+    j["multistart"] = {{"starts", job.starts}, {"scale", job.scale}};
+    if (job.seeds.size() == 1)
+      j["multistart"]["seed"] = job.seeds.front();
+    else
+      j["multistart"]["seeds"] = job.seeds;
+  }
   return j;
 }
 

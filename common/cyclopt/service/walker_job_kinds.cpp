@@ -73,7 +73,7 @@ void run_multistart(const WalkerJob& job, JobContext& ctx) {
   const walker::GaitProblem shape(model, po);
   nlp::MultistartOptions mo;
   mo.num_starts = job.starts;
-  mo.base_seed = job.seed;
+  mo.base_seed = job.seeds.front();
   mo.solver = walker::distant_start_solver(job.solver);
   mo.solver.on_iteration = stop_requests(ctx);
   mo.solver.should_stop = stop_predicate(ctx);

@@ -8,6 +8,8 @@
 #include "cyclopt/walker/model_parameters.hpp"
 #include "cyclopt/walker/virtual_constraints.hpp"
 
+#include <algorithm>
+
 namespace cyclopt::service {
 
 foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
@@ -79,9 +81,27 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
   }
   if (spec.contains("multistart")) {
     const nlohmann::json& m = object_value(spec["multistart"], "multistart");
-    reject_unknown_keys(m, "multistart", {"starts", "seed", "scale"});
+    reject_unknown_keys(m, "multistart", {"starts", "seed", "seeds", "scale"});
     job.starts = optional_integer(m, "multistart", "starts", 1, 1000).value_or(job.starts);
-    job.seed = static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1));
+    if (m.contains("seed") && m.contains("seeds")) throw SpecError("multistart.seeds", "give seed or seeds, not both");
+    if (m.contains("seeds")) {
+      const nlohmann::json& s = m["seeds"];
+      if (!s.is_array() || s.empty() || s.size() > static_cast<std::size_t>(kMaxSeeds))
+        throw SpecError("multistart.seeds", "must be an array of 1 to " + std::to_string(kMaxSeeds) + " distinct seeds in " +
+                                                range_text(0, 2147483647));
+      job.seeds.clear();
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const auto seed = static_cast<std::uint64_t>(integer_value(s[i], "multistart.seeds[" + std::to_string(i) + "]", 0, 2147483647));
+        if (std::find(job.seeds.begin(), job.seeds.end(), seed) != job.seeds.end())
+          throw SpecError("multistart.seeds[" + std::to_string(i) + "]", "repeats seed " + std::to_string(seed));
+        job.seeds.push_back(seed);
+      }
+    } else {
+      job.seeds = {static_cast<std::uint64_t>(optional_integer(m, "multistart", "seed", 0, 2147483647).value_or(1))};
+    }
+    if (!sweep && job.seeds.size() > 1)
+      throw SpecError("multistart.seeds", "several seeds need a task that searches once per seed (sweep, foot_comparison, "
+                                          "foot_design); give one seed");
     job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
   }
   return job;

@@ -19,7 +19,8 @@
 // follow the geometry); design_bounds: the foot dimension bounds of eq. (10.1)
 // (design_bounds_spec.hpp);
 // start: the gait parameters x (default: the automatic starting gait); multistart: starts
-// [1, 1000], seed [0, 2^31), scale (0, 1] rad of the random perturbation. The solver defaults to
+// [1, 1000], seed [0, 2^31) or (sweeps) seeds, up to kMaxSeeds distinct, scale (0, 1] rad of the
+// random perturbation. The solver defaults to
 // the seed's SQP with Table 6.2 (nlp::seed_table_6_2_options()); "solver" overrides it.
 
 #include "cyclopt/foot/foot_spec.hpp"
@@ -37,6 +38,7 @@ namespace cyclopt::service {
 
 inline constexpr double kMinWalkingSpeed = 0.1, kMaxWalkingSpeed = 3.0;  // m/s
 inline constexpr int kMinGaitPoints = 25, kMaxGaitPoints = 20000;    // P of (5.93), "points"
+inline constexpr int kMaxSeeds = 20;                                  // "multistart.seeds"
 // The band of an Ipopt job that names none. An interior-point method needs a smooth problem, and
 // f_mech's max(u q_dot, 0) has a kink at every joint the optimum holds still: from the starting gait
 // at 1.3 m/s Ipopt stopped at MaxIter on the large rolling HM foot of issue 16 with the seed's rule
@@ -54,7 +56,9 @@ struct WalkerJob {
   std::optional<Eigen::VectorXd> start;  // gait parameters x
   nlp::SolverOptions solver;
   int starts = 20;
-  std::uint64_t seed = 1;
+  // multistart.seed, or multistart.seeds (several only where the kind runs a search per seed:
+  // sweep, foot_comparison, foot_design): base seeds of the random perturbations.
+  std::vector<std::uint64_t> seeds{1};
   double scale = 0.05;
 
   walker::WalkerModel<double> model() const { return walker::make_walker_model(foot, constants); }

@@ -1,7 +1,9 @@
 #include "cyclopt/studies/foot_comparison.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 namespace cyclopt::studies {
@@ -29,7 +31,61 @@ double saving_of(const std::vector<double>& f, const std::vector<double>& refere
   return *count && mr > 0.0 ? 1.0 - m / mr : kNaN;
 }
 
+// f_mech of the gait at each found best point (so also for an f_usq objective), NaN elsewhere.
+std::vector<double> f_mech_of(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
+                              const std::vector<BestPoint>& best) {
+  std::vector<double> f;
+  for (const BestPoint& b : best) {
+    double value = kNaN;
+    if (b.found) {
+      walker::GaitProblemOptions po = problem;
+      po.speed = b.speed;
+      const walker::PeriodicGait<double> g = walker::GaitProblem(model, po).gait_at(b.point.x);
+      if (g.real) value = g.f_mech;
+    }
+    f.push_back(value);
+  }
+  return f;
+}
+
+// Ranks the compared feet by saving and sets each foot's seed savings, rank and order_held.
+void rank_feet(FootComparisonResult& r) {
+  const FootSweepSummary& ref = r.feet[r.reference];
+  for (std::size_t k = 0; k < r.feet.size(); ++k) {
+    FootSweepSummary& s = r.feet[k];
+    s.seed_savings.clear();
+    if (k == r.reference) continue;
+    for (std::size_t i = 0; i < s.seed_f_mech.size() && i < ref.seed_f_mech.size(); ++i) {
+      int count = 0;
+      double mean = 0.0;
+      s.seed_savings.push_back(saving_of(s.seed_f_mech[i], ref.seed_f_mech[i], &count, &mean));
+    }
+    r.ranking.push_back(static_cast<int>(k));
+  }
+  std::stable_sort(r.ranking.begin(), r.ranking.end(), [&](int a, int b) {
+    const double sa = r.feet[static_cast<std::size_t>(a)].saving, sb = r.feet[static_cast<std::size_t>(b)].saving;
+    if (std::isfinite(sa) != std::isfinite(sb)) return std::isfinite(sa);
+    return sa > sb;
+  });
+  for (std::size_t n = 0; n < r.ranking.size(); ++n) {
+    FootSweepSummary& a = r.feet[static_cast<std::size_t>(r.ranking[n])];
+    a.rank = static_cast<int>(n);
+    if (n + 1 == r.ranking.size() || a.seed_savings.size() < 2) continue;
+    const FootSweepSummary& b = r.feet[static_cast<std::size_t>(r.ranking[n + 1])];
+    bool held = a.seed_savings.size() == b.seed_savings.size();
+    for (std::size_t i = 0; held && i < a.seed_savings.size(); ++i)
+      held = std::isfinite(a.seed_savings[i]) && (!std::isfinite(b.seed_savings[i]) || a.seed_savings[i] >= b.seed_savings[i]);
+    a.order_held = held;
+  }
+}
+
 }  // namespace
+
+double spread(const std::vector<double>& values) {
+  if (values.size() < 2 || !std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) return kNaN;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  return *hi - *lo;
+}
 
 FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerModel<double>& model,
                                  const walker::GaitProblemOptions& problem, const SpeedSweepResult& sweep) {
@@ -39,16 +95,12 @@ FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerMo
   s.seconds = sweep.seconds;
   s.curves = sweep.curves;
   s.recoveries = sweep.recoveries;
-  for (const BestPoint& b : sweep.best) {
-    double f = kNaN;
-    if (b.found) {
-      walker::GaitProblemOptions po = problem;
-      po.speed = b.speed;
-      const walker::PeriodicGait<double> g = walker::GaitProblem(model, po).gait_at(b.point.x);
-      if (g.real) f = g.f_mech;
-    }
-    s.f_mech.push_back(f);
-    s.speeds_found += std::isfinite(f);
+  s.f_mech = f_mech_of(model, problem, sweep.best);
+  s.speeds_found = static_cast<int>(std::count_if(s.f_mech.begin(), s.f_mech.end(), [](double f) { return std::isfinite(f); }));
+  for (const SeedSearch& search : sweep.searches) {
+    s.seeds.push_back(search.seed);
+    s.seed_f_mech.push_back(search.best.size() == sweep.best.size() && sweep.searches.size() > 1 ? f_mech_of(model, problem, search.best)
+                                                                                                 : s.f_mech);
   }
   return s;
 }
@@ -90,6 +142,7 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
   }
   double envelope_mean = 0.0;
   r.envelope_saving = saving_of(r.envelope_f_mech, ref, &r.envelope_common_speeds, &envelope_mean);
+  rank_feet(r);
   return r;
 }
 

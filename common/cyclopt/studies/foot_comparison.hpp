@@ -9,10 +9,16 @@
 // gesamten Geschwindigkeitsbereich ist um 64 % geringer", section 9.2.3). The envelope (best foot
 // per speed) gets the same saving. Unlike the seed, no solution is excluded by hand (the seed
 // drops toe- and heel-walking optima below 0.8 m/s, Fig. 9.10a and 9.15).
+// With several seeds (SpeedSweepOptions::seeds) every foot's sweep searches once per seed; its f_mech
+// is the best over the seeds, and each seed's own search gives a saving of its own (that seed's
+// search of the foot against that seed's search of the reference). The feet are ranked by saving;
+// for each foot, order_held says whether it beat the next foot in the ranking with every seed - a
+// ranking that the seeds do not all agree on lies within the noise of the search.
 #include "cyclopt/studies/speed_sweep.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <functional>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +38,15 @@ struct FootSweepSummary {
   int curves = 0;
   std::vector<RecoveryAttempt> recoveries;  // the sweep's, in the order tried
   bool stopped = false;                // sweep_foot's on_point asked to stop during its sweep
+  std::vector<std::uint64_t> seeds;    // of the sweep's searches, in order
+  std::vector<std::vector<double>> seed_f_mech;  // per seed: f_mech per grid speed of its own search (NaN: none)
+  // Set by summarise_feet: per seed, the saving of this foot's search against the reference's
+  // search with the same seed (over the speeds both reach); the rank by saving (0: best, the
+  // reference -1); whether this foot's saving beat the next-ranked foot's with every seed (unset
+  // for the last, the reference, a single seed).
+  std::vector<double> seed_savings;
+  int rank = -1;
+  std::optional<bool> order_held;
 };
 
 struct FootComparisonResult {
@@ -44,7 +59,12 @@ struct FootComparisonResult {
   int envelope_common_speeds = 0;
   int best_mean_foot = -1;             // the compared foot with the largest saving among those
                                        // reaching every speed the reference reaches (else among all)
+  std::vector<int> ranking;            // compared feet by saving, best first (those without one last)
 };
+
+// (max - min) of the values, NaN if fewer than two or any is not finite: the spread of a foot's
+// seed savings.
+double spread(const std::vector<double>& values);
 
 // Mean f_mech and saving of every foot against feet[reference]; the per-speed winners and the
 // envelope. Throws std::invalid_argument if reference is not an index into feet.

@@ -18,6 +18,7 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace cyclopt::studies {
 
@@ -63,9 +64,14 @@ struct Target {
 
 class Sweep {
  public:
+  // One search with base seed `seed`; its curve ids begin at first_curve.
   Sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem, const SpeedSweepOptions& o,
-        const PointCallback& on_point)
-      : model_(model), problem_(problem), o_(o), on_point_(on_point), family_(walker_family(model, problem, "speed")) {}
+        const PointCallback& on_point, std::uint64_t seed, int first_curve)
+      : model_(model), problem_(problem), o_(o), on_point_(on_point), family_(walker_family(model, problem, "speed")),
+        seed_(seed), first_curve_(first_curve) {
+    r_.curves = first_curve;
+    r_.origins.resize(static_cast<std::size_t>(first_curve));
+  }
 
   SpeedSweepResult run();
 
@@ -120,6 +126,11 @@ class Sweep {
   void continue_both_ways(const Task& up, const Task& down, std::deque<Task>& queue);
   std::optional<Target> next_target();
   void recover(const Target& target);
+  // The closure of the envelope (speed_sweep.hpp) and its starts at grid speed i not tried there yet.
+  void close_envelope();
+  std::vector<const CurvePoint*> closure_starts(std::size_t i);
+  bool closure_pass(int pass);  // true if it improved a best point
+  void mark_tried(std::size_t i, const CurvePoint& p) { tried_starts_.insert({i, p.curve_id, p.parameter}); }
   void select_best();
   void begin_phase(SweepPhase phase, std::string detail, int total);
   void report();  // o_.on_progress of the current state; callers hold progress_mutex_
@@ -132,9 +143,11 @@ class Sweep {
   const SpeedSweepOptions& o_;
   const PointCallback& on_point_;
   const ParametricProblem family_;
+  const std::uint64_t seed_;
+  const int first_curve_;
   SpeedSweepResult r_;
   bool stopped_ = false;
-  bool recovering_ = false;  // in the recovery loop (progress phase of its runs)
+  SweepPhase run_phase_ = SweepPhase::continuation;  // progress phase of continuation runs (recovery, closure)
   std::vector<bool> seeded_;                    // per grid speed: a gait multistart ran there
   // Per grid speed: the curves there were (r_.curves) when its unreached recovery was last tried,
   // -1 before any; it is tried again once curves were opened since, from those curves only.
@@ -142,6 +155,9 @@ class Sweep {
   std::set<std::pair<std::size_t, int>> dominance_tried_;  // (grid speed, neighbour's curve)
   std::map<std::size_t, std::string> failures_;  // per grid speed: what recovery tried
   std::map<std::size_t, std::string> tried_from_;  // per grid speed: the R1 starts of its tries
+  std::set<std::tuple<std::size_t, int, double>> tried_starts_;  // (grid speed, curve, its point's speed)
+  std::vector<int> closure_passes_;             // per grid speed: closure passes that solved there
+  std::map<int, int> closure_curves_;           // curve id -> the closure pass that opened it
   int batches_ = 0;                             // multistart batches begun (journal keys)
   int runs_begun_ = 0;                          // continuation runs begun (journal keys)
 
@@ -182,6 +198,7 @@ double Sweep::eta_seconds() const {
   const double batch_wall = progress_.phase == SweepPhase::multistart ? seconds_since(batch_start_) : 0.0;
   const double solve_rate = computed_solves_ > 0 ? (r_.multistart_seconds + batch_wall) / computed_solves_ : SweepProgress::kNaN;
   const int unreached = progress_.speeds_total - progress_.speeds_reached;
+  if (progress_.phase == SweepPhase::closure) return SweepProgress::kNaN;  // its passes cannot be foreseen
   if (progress_.phase == SweepPhase::recovery) {
     const int done = static_cast<int>(r_.recoveries.size());
     const double per_target = done > 0 ? r_.recovery_seconds / done : o_.starts * solve_rate;
@@ -266,7 +283,7 @@ nlp::MultistartResult Sweep::gait_multistart_at(double v, int* solves) {
   const walker::GaitProblem shape(model_, at_speed(v));
   std::vector<Eigen::VectorXd> starts;
   for (int i = 0; i < o_.starts; ++i) {
-    std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
+    std::mt19937_64 rng(seed_ + static_cast<std::uint64_t>(i));
     starts.push_back(shape.initial_point(walker::perturbed_gait(ev, sg.x, o_.scale, rng)));
   }
   if (solves) *solves += o_.starts;
@@ -466,7 +483,7 @@ void Sweep::run_task(const Task& t, const std::vector<double>& grid, std::option
   char detail[96];
   std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
                 t.direction > 0 ? "upwards" : "downwards", t.curve_id);
-  begin_phase(recovering_ ? SweepPhase::recovery : SweepPhase::continuation, detail, static_cast<int>(grid.size()) - 1);
+  begin_phase(run_phase_, detail, static_cast<int>(grid.size()) - 1);
   const int number = runs_begun_++;
   RunOutcome o = compute_run(t, grid, number, r_.curves, std::move(recorded), nullptr);
   if (o.computed) {
@@ -494,7 +511,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   char detail[96];
   std::snprintf(detail, sizeof detail, "runs %d and %d from %.4g m/s upwards and downwards, curve %d", first + 1, first + 2,
                 up.speed, up.curve_id);
-  begin_phase(recovering_ ? SweepPhase::recovery : SweepPhase::continuation, detail,
+  begin_phase(run_phase_, detail,
               static_cast<int>(up_grid.size() + down_grid.size()) - 2);
   runs_begun_ += 2;
   // Provisional ids of the downward run's curves jumped to, renumbered once the upward run's are known.
@@ -607,6 +624,7 @@ void Sweep::recover(const Target& target) {
   std::vector<Eigen::VectorXd> starts;
   std::string curves;
   for (const CurvePoint* p : target.seeds) {
+    mark_tried(target.index, *p);
     starts.push_back(p->x);
     curves += (curves.empty() ? "" : ", ") + std::to_string(p->curve_id) + " at " + std::to_string(p->parameter);
   }
@@ -620,7 +638,7 @@ void Sweep::recover(const Target& target) {
     std::vector<Eigen::VectorXd> perturbed;
     const int count = target.unreached || o_.dominance_starts == 0 ? o_.starts : o_.dominance_starts;
     for (int i = 0; i < count; ++i) {
-      std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
+      std::mt19937_64 rng(seed_ + static_cast<std::uint64_t>(i));
       Eigen::VectorXd z = starts[static_cast<std::size_t>(i) % starts.size()];
       z.head(shape.gait_parameters(z).size()) = walker::perturbed_gait(ev, shape.gait_parameters(z), o_.scale, rng);
       perturbed.push_back(std::move(z));
@@ -661,15 +679,119 @@ void Sweep::recover(const Target& target) {
   r_.recoveries.push_back(std::move(a));
 }
 
+std::vector<const CurvePoint*> Sweep::closure_starts(std::size_t i) {
+  const std::size_t n = o_.speeds.size();
+  const double v = o_.speeds[i];
+  // One grid step: the wider of the two intervals next to v.
+  double step = 0.0;
+  if (i > 0) step = std::max(step, v - o_.speeds[i - 1]);
+  if (i + 1 < n) step = std::max(step, o_.speeds[i + 1] - v);
+  step *= 1.0 + 1e-9;
+  std::map<int, const CurvePoint*> nearest;  // per curve without a converged point at v
+  std::set<int> at_v;
+  for (const ContinuationResult& run : r_.runs)
+    for (const CurvePoint& p : run.points) {
+      if (!p.converged) continue;
+      if (same_speed(p.parameter, v)) {
+        at_v.insert(p.curve_id);
+        continue;
+      }
+      const double d = std::abs(p.parameter - v);
+      const CurvePoint*& q = nearest[p.curve_id];
+      if (d <= step && (!q || d < std::abs(q->parameter - v))) q = &p;
+    }
+  std::vector<const CurvePoint*> candidates;
+  for (std::size_t j : {i - 1, i + 1})  // i - 1 wraps to a huge value for i = 0
+    if (j < n && r_.best[j].found) {
+      const CurvePoint* p = best_at(o_.speeds[j]);
+      if (p) candidates.push_back(p);
+    }
+  for (const auto& [curve, p] : nearest)
+    if (p) candidates.push_back(p);
+  std::vector<const CurvePoint*> starts;
+  for (const CurvePoint* p : candidates) {
+    if (at_v.count(p->curve_id) || tried_starts_.count({i, p->curve_id, p->parameter})) continue;
+    mark_tried(i, *p);
+    starts.push_back(p);
+  }
+  return starts;
+}
+
+bool Sweep::closure_pass(int pass) {
+  bool improved = false;
+  for (std::size_t i = 0; i < o_.speeds.size() && !stopped_; ++i) {
+    const std::vector<const CurvePoint*> from = closure_starts(i);
+    if (from.empty()) continue;
+    ++closure_passes_[i];
+    const double v = o_.speeds[i];
+    char detail[64];
+    std::snprintf(detail, sizeof detail, "pass %d at %.4g m/s", pass, v);
+    begin_phase(SweepPhase::closure, detail, static_cast<int>(from.size()));
+    std::vector<Eigen::VectorXd> starts;
+    for (const CurvePoint* p : from) starts.push_back(p->x);
+    const nlp::MultistartResult m = solve_from(v, std::move(starts));
+    r_.closure.solves += static_cast<int>(m.runs.size());
+    if (m.optima.empty()) continue;
+    const double f = m.optima.front().objective;
+    const CurvePoint* current = best_at(v);
+    if (current && !(current->objective - f > o_.closure.min_improvement * std::max(std::abs(current->objective), 1e-12)))
+      continue;
+    if (r_.curves >= o_.max_curves) {
+      r_.closure.reason = "a better point was found but max_curves (" + std::to_string(o_.max_curves) + ") curves are in use";
+      return false;
+    }
+    closure_curves_[r_.curves] = pass;
+    open_and_continue(m.optima.front().x, v, {SweepStep::closure, v}, true);
+    select_best();  // the neighbours' best points for the next speeds
+    improved = true;
+  }
+  return improved;
+}
+
+void Sweep::close_envelope() {
+  EnvelopeClosure& c = r_.closure;
+  if (!o_.closure.enabled) {
+    c.reason = "closure off";
+    return;
+  }
+  const Clock::time_point t0 = Clock::now();
+  closure_passes_.assign(o_.speeds.size(), 0);
+  run_phase_ = SweepPhase::closure;
+  while (!stopped_) {
+    if (c.passes >= o_.closure.max_passes) {
+      c.reason = "max_passes (" + std::to_string(o_.closure.max_passes) + ") passes each improved a point";
+      break;
+    }
+    if (o_.closure.max_seconds > 0.0 && seconds_since(t0) >= o_.closure.max_seconds) {
+      char text[128];
+      std::snprintf(text, sizeof text, "time budget (closure.max_seconds = %g s) spent after %d passes", o_.closure.max_seconds,
+                    c.passes);
+      c.reason = text;
+      break;
+    }
+    ++c.passes;
+    if (!closure_pass(c.passes)) {
+      c.closed = c.reason.empty();
+      break;
+    }
+  }
+  if (stopped_ && !c.closed && c.reason.empty()) c.reason = "stopped";
+  c.seconds = seconds_since(t0);
+}
+
 void Sweep::select_best() {
   r_.best.clear();
   for (std::size_t i = 0; i < o_.speeds.size(); ++i) {
     BestPoint b;
     b.speed = o_.speeds[i];
+    b.seed = seed_;
+    if (!closure_passes_.empty()) b.closure_passes = closure_passes_[i];
     if (const CurvePoint* p = best_at(b.speed)) {
       b.found = true;
       b.point = *p;
       b.origin = r_.origins[static_cast<std::size_t>(p->curve_id)];
+      const auto pass = closure_curves_.find(p->curve_id);
+      if (pass != closure_curves_.end()) b.closure_pass = pass->second;
     } else {
       const auto failure = failures_.find(i);
       b.reason = failure != failures_.end() ? failure->second : "no curve reached this speed with a KKT point";
@@ -717,7 +839,7 @@ SpeedSweepResult Sweep::run() {
   select_best();
   if (o_.recover && !stopped_) {
     const Clock::time_point recovery_start = Clock::now();
-    recovering_ = true;
+    run_phase_ = SweepPhase::recovery;
     while (!stopped_) {
       const std::optional<Target> target = next_target();
       if (!target) break;
@@ -726,8 +848,89 @@ SpeedSweepResult Sweep::run() {
     }
     r_.recovery_seconds = seconds_since(recovery_start);
   }
+  if (!stopped_) close_envelope();
+  select_best();
+  r_.searches.push_back({seed_, r_.best, r_.closure, first_curve_, r_.curves - first_curve_, seconds_since(start)});
   r_.seconds = seconds_since(start);
   return std::move(r_);
+}
+
+// A search per seed (speed_sweep.hpp), one after the other: curve ids run on, each search's
+// journal keys are its own (search k's batch and run numbers + k * kSearchKeys), the envelope is the
+// best point per speed over the searches.
+constexpr int kSearchKeys = 1 << 20;
+
+SweepJournal search_journal(const SweepJournal& j, int k) {
+  const int offset = k * kSearchKeys;
+  SweepJournal s;
+  if (j.find_solve) s.find_solve = [&j, offset](int batch, int start) { return j.find_solve(batch + offset, start); };
+  if (j.record_solve)
+    s.record_solve = [&j, offset](int batch, int start, const nlp::SolverSummary& run) { j.record_solve(batch + offset, start, run); };
+  if (j.find_run) s.find_run = [&j, offset](int run) { return j.find_run(run + offset); };
+  if (j.record_run) s.record_run = [&j, offset](int run, const ContinuationResult& r) { j.record_run(run + offset, r); };
+  return s;
+}
+
+SpeedSweepResult several_searches(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
+                                  const SpeedSweepOptions& options, const PointCallback& on_point) {
+  SpeedSweepResult all;
+  bool stopped = false;
+  const PointCallback forward = [&](const CurvePoint& p) {
+    if (on_point && !on_point(p)) stopped = true;
+    return !stopped;
+  };
+  all.closure.closed = true;
+  for (std::size_t k = 0; k < options.seeds.size() && !stopped; ++k) {
+    SpeedSweepOptions o = options;
+    o.journal = search_journal(options.journal, static_cast<int>(k));
+    const std::string search = "seed " + std::to_string(k + 1) + " of " + std::to_string(options.seeds.size()) + ": ";
+    if (options.on_progress)
+      o.on_progress = [&](const SweepProgress& p) {
+        SweepProgress q = p;
+        q.detail = search + p.detail;
+        options.on_progress(q);
+      };
+    SpeedSweepResult r = Sweep(model, problem, o, forward, options.seeds[k], all.curves).run();
+    for (ContinuationResult& run : r.runs) all.runs.push_back(std::move(run));
+    for (RecoveryAttempt& a : r.recoveries) all.recoveries.push_back(std::move(a));
+    all.origins.insert(all.origins.end(), r.origins.begin() + all.curves, r.origins.end());
+    all.curves = r.curves;
+    all.multistart_solves += r.multistart_solves;
+    all.resumed_solves += r.resumed_solves;
+    all.computed_runs += r.computed_runs;
+    all.resumed_runs += r.resumed_runs;
+    all.multistart_seconds += r.multistart_seconds;
+    all.multistart_cpu_seconds += r.multistart_cpu_seconds;
+    all.recovery_seconds += r.recovery_seconds;
+    all.seconds += r.seconds;
+    all.closure.passes += r.closure.passes;
+    all.closure.solves += r.closure.solves;
+    all.closure.seconds += r.closure.seconds;
+    if (!r.closure.closed && all.closure.closed) {
+      all.closure.closed = false;
+      all.closure.reason = search + r.closure.reason;
+    }
+    all.searches.push_back(std::move(r.searches.front()));
+  }
+  const std::size_t n = options.speeds.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const BestPoint* best = nullptr;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    bool every = all.searches.size() == options.seeds.size();
+    for (const SeedSearch& s : all.searches) {
+      const BestPoint& b = s.best[i];
+      if (!b.found) {
+        every = false;
+        continue;
+      }
+      lo = std::min(lo, b.point.objective);
+      hi = std::max(hi, b.point.objective);
+      if (!best || b.point.objective < best->point.objective) best = &b;
+    }
+    all.best.push_back(best ? *best : all.searches.front().best[i]);
+    all.seed_spread.push_back(every && lo > 0.0 ? (hi - lo) / lo : std::numeric_limits<double>::quiet_NaN());
+  }
+  return all;
 }
 
 }  // namespace
@@ -737,6 +940,7 @@ const char* to_string(SweepPhase phase) {
     case SweepPhase::multistart: return "multistart";
     case SweepPhase::continuation: return "continuation";
     case SweepPhase::recovery: return "recovery";
+    case SweepPhase::closure: return "closure";
   }
   return "?";
 }
@@ -749,6 +953,7 @@ const char* to_string(SweepStep step) {
     case SweepStep::neighbour_start: return "R1 neighbour start";
     case SweepStep::neighbour_multistart: return "R2 neighbour multistart";
     case SweepStep::gait_multistart: return "R3 gait multistart";
+    case SweepStep::closure: return "closure start";
   }
   return "?";
 }
@@ -757,7 +962,15 @@ std::string describe(const BestPoint& best) {
   if (!best.found) return best.reason;
   char at[64];
   std::snprintf(at, sizeof at, " at %.4g m/s", best.origin.speed);
-  return std::string(to_string(best.origin.step)) + at + (same_speed(best.point.parameter, best.origin.speed) ? "" : ", continued");
+  std::string text = std::string(to_string(best.origin.step)) + at;
+  if (best.closure_pass > 0) text += " in pass " + std::to_string(best.closure_pass);
+  return text + (same_speed(best.point.parameter, best.origin.speed) ? "" : ", continued");
+}
+
+std::string describe(const EnvelopeClosure& closure) {
+  if (closure.closed)
+    return "closed after " + std::to_string(closure.passes) + (closure.passes == 1 ? " pass" : " passes");
+  return "not closed: " + closure.reason;
 }
 
 SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
@@ -782,7 +995,18 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
       throw std::invalid_argument("known_gaits: " + std::to_string(known.x.size()) + " gait parameters, expected " +
                                   std::to_string(gait_count));
   }
-  return Sweep(model, problem, options, on_point).run();
+  if (options.seeds.empty()) throw std::invalid_argument("seeds: need at least one seed");
+  if (std::set<std::uint64_t>(options.seeds.begin(), options.seeds.end()).size() != options.seeds.size())
+    throw std::invalid_argument("seeds: must be distinct");
+  if (options.closure.max_passes < 1) throw std::invalid_argument("closure.max_passes: must be >= 1");
+  if (!(options.closure.min_improvement >= 0.0)) throw std::invalid_argument("closure.min_improvement: must be >= 0");
+  if (!(options.closure.max_seconds >= 0.0)) throw std::invalid_argument("closure.max_seconds: must be >= 0 (0: none)");
+  if (options.seeds.size() == 1) {
+    SpeedSweepResult r = Sweep(model, problem, options, on_point, options.seeds.front(), 0).run();
+    r.seed_spread.assign(r.best.size(), std::numeric_limits<double>::quiet_NaN());
+    return r;
+  }
+  return several_searches(model, problem, options, on_point);
 }
 
 }  // namespace cyclopt::studies

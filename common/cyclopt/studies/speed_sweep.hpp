@@ -31,6 +31,16 @@
 // (R1 and R2 from those curves only: a later recovery's curve may pass nearer to it), each (speed,
 // neighbour curve) pair of a dominance test once, so the recovery ends (max_curves). A speed still
 // without a point gets a reason naming what was tried and which options to change.
+// Closure (issue 21 item 3, not in the seed): the envelope is then closed. In a pass, every grid
+// speed is solved from the best points of its neighbouring speeds and from the converged point
+// nearest to it of every curve that has none at it, within one grid step (each such start once per
+// speed); a point better than the speed's best by more than closure.min_improvement (relative)
+// opens a curve, continued both ways while it is the best known. Passes repeat until one improves
+// no best point (the envelope is "closed") or closure.max_passes / closure.max_seconds end them.
+// Several seeds (SpeedSweepOptions::seeds): the whole search above runs once per seed, each on its
+// own (a search sees only its own curves); the envelope is the best point per speed over all
+// seeds' searches, and seed_spread says how far the seeds' own envelopes differ per speed - how
+// sure the answer is. Curve ids run on from one search to the next.
 // BestPoint::step tells which step found the curve through the selected point.
 // The two runs from a new point (upwards and downwards) are computed at once when a core is spare
 // (nlp/spare_core.hpp): below the start speed the upward run has no point, so the downward run is
@@ -62,11 +72,20 @@ struct KnownGait {
   Eigen::VectorXd x;
 };
 
+// The closure of the envelope (above).
+struct EnvelopeClosureOptions {
+  bool enabled = true;
+  double min_improvement = 1e-4;  // relative: a point must beat the speed's best by more to count
+  int max_passes = 8;             // >= 1
+  double max_seconds = 0.0;       // wall budget of the closure; 0: none. A pass begun is finished.
+};
+
 struct SpeedSweepOptions {
   std::vector<double> speeds;                       // the grid, strictly ascending, >= 2 values
   std::vector<double> seed_speeds{0.3, 1.3, 2.3};   // multistart at the nearest grid values
   int starts = 20;                                  // multistart runs per seed speed (seed: 20)
-  std::uint64_t seed = 1;                           // base seed of the random perturbations
+  // Base seeds of the random perturbations: one search per seed (above), >= 1 distinct values.
+  std::vector<std::uint64_t> seeds{1};
   double scale = 0.05;                              // rad, of the perturbations
   // R2 perturbations in a dominance test (below; an unreached speed gets `starts`); 0: `starts`.
   // Fewer are faster and find fewer better optima - measured with 20 starts and 5 here
@@ -88,6 +107,7 @@ struct SpeedSweepOptions {
   int runner_ups = 0;
   double runner_up_margin = 0.05;
   bool recover = true;                              // R1-R3 above; false: the seed's workflow only
+  EnvelopeClosureOptions closure;
   // A seed optimum lies on a known curve if a converged point there has |f - f_c| <=
   // same_objective * max(1, |f|) and |x - x_c|_inf <= same_x.
   double same_objective = 1e-6;
@@ -127,6 +147,7 @@ enum class SweepStep {
   neighbour_start,       // R1
   neighbour_multistart,  // R2
   gait_multistart,       // R3
+  closure,               // a start of the envelope's closure
 };
 const char* to_string(SweepStep step);
 
@@ -141,6 +162,9 @@ struct BestPoint {
   CurvePoint point;    // when found
   CurveOrigin origin;  // of point.curve_id, when found
   std::string reason;  // when not
+  int closure_passes = 0;  // closure passes that solved at this speed (0: none had a new start here)
+  int closure_pass = 0;    // the pass that found the point's curve (0: not the closure)
+  std::uint64_t seed = 0;  // of the search that found the point
 };
 // "R1 neighbour start at 0.40 m/s, continued" (how the point was found) or the reason.
 std::string describe(const BestPoint& best);
@@ -156,12 +180,38 @@ struct RecoveryAttempt {
   double seconds = 0.0;
 };
 
+// How the closure of one search ended.
+struct EnvelopeClosure {
+  bool closed = false;  // the last pass improved no best point
+  int passes = 0;
+  int solves = 0;       // local solves of its starts
+  double seconds = 0.0;
+  std::string reason;   // why not closed: "closure off", "max_passes (8) reached", "time budget ..."
+};
+std::string describe(const EnvelopeClosure& closure);  // "closed after 2 passes" or the reason
+
+// One seed's search and its own envelope.
+struct SeedSearch {
+  std::uint64_t seed = 1;
+  std::vector<BestPoint> best;  // one per grid speed
+  EnvelopeClosure closure;
+  int first_curve = 0, curves = 0;  // its curve ids: first_curve .. first_curve + curves - 1
+  double seconds = 0.0;
+};
+
 struct SpeedSweepResult {
   std::vector<ContinuationResult> runs;  // in the order run
-  std::vector<BestPoint> best;           // one per grid speed
+  std::vector<BestPoint> best;           // one per grid speed: the best over every seed's search
+  std::vector<SeedSearch> searches;      // one per seed, in the order of options.seeds
+  // Per grid speed: (max - min) / min of the objective over the seeds' own envelopes, where every
+  // search has a point; NaN with one seed or where a search has none.
+  std::vector<double> seed_spread;
   std::vector<RecoveryAttempt> recoveries;  // in the order tried
   std::vector<CurveOrigin> origins;      // of curve id 0 .. curves - 1
   int curves = 0;                        // curve ids used: 0 .. curves - 1
+  // The closure: of the one search, or of all (passes, solves, seconds summed; closed if every
+  // search's envelope is, else the first reason).
+  EnvelopeClosure closure;
   int multistart_solves = 0;             // step 1 and R1-R3, solved in this attempt
   int resumed_solves = 0;                // ... taken from the journal instead
   int computed_runs = 0;                 // continuation runs computed in this attempt

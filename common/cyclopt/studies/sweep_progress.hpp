@@ -12,7 +12,7 @@
 
 namespace cyclopt::studies {
 
-enum class SweepPhase { multistart, continuation, recovery };
+enum class SweepPhase { multistart, continuation, recovery, closure };
 const char* to_string(SweepPhase phase);
 
 struct SweepProgress {
