@@ -3,8 +3,9 @@
 // there: source, licence, what was kept): the files read as published, the vertical axis and the
 // stances are found, a stance the recording cuts is refused and never fitted, every foot fits
 // without a hand-given interval with its HMT parameters in the range of the seed's own fits
-// (appendix B).
+// (appendix B), and the spreads over strides and boundaries are reported.
 #include "cyclopt/foot_fit/ankle_track.hpp"
+#include "cyclopt/foot_fit/fit_spread.hpp"
 #include "cyclopt/foot_fit/gait_trial_file.hpp"
 #include "cyclopt/foot_fit/marker_file.hpp"
 #include "cyclopt/foot_fit/opensim_storage_file.hpp"
@@ -214,4 +215,44 @@ TEST(GaitRecordings, EveryFootFitsWithinTheSeedsRanges) {
     EXPECT_TRUE(fit.hmt.convexity.convex) << name;
     expect_in_seed_range(fit.hmt, name);
   }
+}
+
+// Item 3: with two strides both spreads are reported, and they are what the refits say they
+// are - the boundary spread the largest change over the eight boundary refits, the stride
+// spread the jackknife of the two single-stride fits.
+TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
+  const std::vector<cf::GaitTrial> trials{rajagopal_walk("R")};
+  cf::RollingFootFit fit = cf::fit_rolling_foot(cf::stance_tracks(trials));
+  const cf::FitSpread spread = cf::add_fit_spread(fit, trials);
+  ASSERT_EQ(spread.refits.size(), 10u);
+  EXPECT_EQ(fit.hmt.spread_refits, 10);
+  EXPECT_EQ(fit.hmt.boundary_tolerance, 0.04);
+  for (const cf::FootFitResult* f : {&fit.hm, &fit.hmt})
+    for (std::size_t i = 0; i < f->estimates.size(); ++i) {
+      const cf::ParameterEstimate& e = f->estimates[i];
+      if (e.fixed) {
+        EXPECT_TRUE(std::isnan(e.boundary_spread));
+        continue;
+      }
+      const auto refit_value = [&](const cf::Refit& r) { return (f == &fit.hm ? r.hm : r.hmt)[static_cast<Eigen::Index>(i)]; };
+      double largest = 0.0;
+      for (std::size_t k = 2; k < spread.refits.size(); ++k) largest = std::max(largest, std::abs(refit_value(spread.refits[k]) - e.value));
+      EXPECT_EQ(e.boundary_spread, largest) << e.name;
+      EXPECT_NEAR(e.stride_spread, 0.5 * std::abs(refit_value(spread.refits[0]) - refit_value(spread.refits[1])),
+                  1e-12 * std::abs(e.value) + 1e-15)
+          << e.name;
+      if (e.at_bound) {
+        EXPECT_NE(e.flag.find("on its bound"), std::string::npos) << e.name;
+      }
+      const double width = cf::seed_fitted_range(f->model, static_cast<int>(i)).width();
+      EXPECT_EQ(e.flag.find("boundary spread") != std::string::npos, e.boundary_spread > 0.25 * width) << e.name << ": " << e.flag;
+    }
+  // The conditional standard errors understate what a 40 ms boundary does (issue 56).
+  EXPECT_GT(fit.hmt.estimates[foot::hmt::l_HA].boundary_spread, 3.0 * fit.hmt.estimates[foot::hmt::l_HA].standard_error);
+  // One stride: no stride spread.
+  const std::vector<cf::GaitTrial> one{rajagopal_walk("L")};
+  cf::RollingFootFit single = cf::fit_rolling_foot(cf::stance_tracks(one));
+  cf::add_fit_spread(single, one);
+  EXPECT_TRUE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].stride_spread));
+  EXPECT_FALSE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].boundary_spread));
 }
