@@ -218,14 +218,18 @@ TEST(GaitRecordings, EveryFootFitsWithinTheSeedsRanges) {
 }
 
 // Item 3: with two strides both spreads are reported, and they are what the refits say they
-// are - the boundary spread the largest change over the eight boundary refits, the stride
-// spread the jackknife of the two single-stride fits.
+// are - the boundary spread the largest change over the boundary refits (a plate's stance only
+// shrinks: start later, end earlier, both), the stride spread the jackknife of the two
+// single-stride fits.
 TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
   const std::vector<cf::GaitTrial> trials{rajagopal_walk("R")};
   cf::RollingFootFit fit = cf::fit_rolling_foot(cf::stance_tracks(trials));
   const cf::FitSpread spread = cf::add_fit_spread(fit, trials);
-  ASSERT_EQ(spread.refits.size(), 10u);
-  EXPECT_EQ(fit.hmt.spread_refits, 10);
+  ASSERT_EQ(spread.refits.size(), 5u);
+  EXPECT_EQ(spread.refits[2].what, "start +40 ms, end +0 ms");
+  EXPECT_EQ(spread.refits[3].what, "start +0 ms, end -40 ms");
+  EXPECT_EQ(spread.refits[4].what, "start +40 ms, end -40 ms");
+  EXPECT_EQ(fit.hmt.spread_refits, 5);
   EXPECT_EQ(fit.hmt.boundary_tolerance, 0.04);
   for (const cf::FootFitResult* f : {&fit.hm, &fit.hmt})
     for (std::size_t i = 0; i < f->estimates.size(); ++i) {
@@ -249,10 +253,10 @@ TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
     }
   // The conditional standard errors understate what a 40 ms boundary does (issue 56).
   EXPECT_GT(fit.hmt.estimates[foot::hmt::l_HA].boundary_spread, 3.0 * fit.hmt.estimates[foot::hmt::l_HA].standard_error);
-  // One stride: no stride spread.
-  const std::vector<cf::GaitTrial> one{rajagopal_walk("L")};
+  // One stride found by the kinematic rule: no stride spread, boundaries moved both ways.
+  const std::vector<cf::GaitTrial> one{test_walking("L")};
   cf::RollingFootFit single = cf::fit_rolling_foot(cf::stance_tracks(one));
-  cf::add_fit_spread(single, one);
+  EXPECT_EQ(cf::add_fit_spread(single, one).refits.size(), 8u);
   EXPECT_TRUE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].stride_spread));
   EXPECT_FALSE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].boundary_spread));
 }

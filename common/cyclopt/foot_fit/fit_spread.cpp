@@ -2,6 +2,7 @@
 
 #include "cyclopt/foot_fit/seed_fitted_ranges.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -96,10 +97,28 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(k));
       spread.refits.push_back(refit(rest, fit_options, "without " + all[k].source, true));
     }
+  // Boundary refits, each once: a shift that moves no boundary (a plate's stance only shrinks)
+  // or moves them as an earlier one did is skipped.
+  auto windows = [](const std::vector<AnkleTrack>& tracks) {
+    std::vector<std::pair<int, int>> w;
+    for (const AnkleTrack& t : tracks) w.emplace_back(t.first_sample, t.last_sample);
+    return w;
+  };
+  std::vector<std::vector<std::pair<int, int>>> seen{windows(all)};
   const double d = o.boundary_tolerance;
   if (d > 0.0)
-    for (const auto& [ds, de] : {std::pair{-d, 0.0}, {d, 0.0}, {0.0, -d}, {0.0, d}, {-d, -d}, {-d, d}, {d, -d}, {d, d}})
-      spread.refits.push_back(refit(stance_tracks(trials, ds, de), fit_options, shift_text(ds, de), false));
+    for (const auto& [ds, de] : {std::pair{-d, 0.0}, {d, 0.0}, {0.0, -d}, {0.0, d}, {-d, -d}, {-d, d}, {d, -d}, {d, d}}) {
+      std::vector<AnkleTrack> tracks;
+      for (const GaitTrial& t : trials)
+        for (std::size_t k = 0; k < t.stances.size(); ++k)
+          if (t.stances[k].complete()) {
+            const bool contact = t.stances[k].contact;
+            tracks.push_back(stance_track(t, static_cast<int>(k), contact ? std::max(ds, 0.0) : ds, contact ? std::min(de, 0.0) : de));
+          }
+      if (std::find(seen.begin(), seen.end(), windows(tracks)) != seen.end()) continue;
+      seen.push_back(windows(tracks));
+      spread.refits.push_back(refit(tracks, fit_options, shift_text(ds, de), false));
+    }
   write_spreads(fit.hm, spread.refits, &Refit::hm, &Refit::hm_converged, o);
   write_spreads(fit.hmt, spread.refits, &Refit::hmt, &Refit::hmt_converged, o);
   spread.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

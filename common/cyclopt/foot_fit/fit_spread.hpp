@@ -7,7 +7,10 @@
 //  - over the strides, with K >= 2 complete stances: the jackknife standard error of the K fits
 //    that each leave one stance out, sqrt((K-1)/K sum (p_(k) - mean)^2);
 //  - over the boundaries: the largest change of a parameter when the start, the end, or both
-//    boundaries of every stance move by +-boundary_tolerance (8 refits).
+//    boundaries of every stance move by +-boundary_tolerance (up to 8 refits). A stance bounded
+//    by a loaded plate only shrinks (its start moves later, its end earlier): the rolling phase
+//    lies within the contact the plate measured, but how much of the contact's first and last
+//    tens of milliseconds (heel impact, toe flexion) is rigid rolling is uncertain.
 // A parameter is flagged when it sits on a bound, or when a spread exceeds flag_fraction of the
 // range the seed's own fits of that parameter span (seed_fitted_ranges.hpp).
 

@@ -29,7 +29,7 @@ bool after_data(const AnkleSeries& a, int i) {
 // The stance [first, last] with its checks: missing ankle frames (cut by the recording or an
 // unfilled gap) and too few frames.
 Stance checked(const AnkleSeries& a, int first, int last, std::string rule, const StanceOptions& o) {
-  Stance s{first, last, a.time[first], a.time[last], std::move(rule), {}};
+  Stance s{first, last, a.time[first], a.time[last], std::move(rule), false, {}};
   int gap_first = -1, gap_last = -1;
   for (int i = first; i <= last; ++i)
     if (!a.present(i)) {
@@ -89,6 +89,7 @@ std::vector<Stance> force_stances(const AnkleSeries& a, const std::vector<ForceC
         if (d.empty() || median(d) > o.max_cop_distance) continue;  // another foot on this plate
       }
       Stance s = checked(a, first, last, "force " + c.name, o);
+      s.contact = true;
       if (s.complete() && (first == 0 || std::isnan(f[first - 1])))
         s.refusal = "cut by the start of the force recording (" + c.name + " loaded at " + fixed(a.time[first], 3) +
                     " s; the foot may have been on the ground before)";

@@ -32,7 +32,9 @@ struct StanceOptions {
 struct Stance {
   int first = 0, last = 0;  // frames of the recording (0-based samples), inclusive
   double start = 0.0, end = 0.0;  // s
-  std::string rule;     // "force ground_force_r_", "force column Fz", "kinematics", "interval"
+  std::string rule;     // "force ground_force_r_", "force Fz", "kinematics", "interval"
+  // Bounded by measured contact (a loaded plate): the rolling phase lies within [start, end].
+  bool contact = false;
   std::string refusal;  // why it is not fitted; empty for a complete stance
   bool complete() const { return refusal.empty(); }
 };
