@@ -58,6 +58,8 @@ or a long gap cuts is refused with the reason and not fitted.
                        frame (default 2)
   --boundary-tolerance S  how far stance boundaries are moved for the boundary spread (default
                        0.04 s); 0 skips it
+  --boundary-steps N   grid points per side up to the tolerance (default 4: 80 refits per
+                       kinematic stance set, 24 for force-plate stances, which only shrink)
   --no-spread          no refits: conditional standard errors only
   --model HM|HMT|both  which fits to report (default both; HMT always starts from HM)
   --no-toe-bound       drop the seed's l_MT <= z_min (4.18b)
@@ -226,6 +228,10 @@ int run_fit_command(int argc, char** argv) {
         spread_options.boundary_tolerance = number(flag, a.value(flag));
         if (!(spread_options.boundary_tolerance >= 0 && spread_options.boundary_tolerance <= 0.2))
           throw std::invalid_argument("--boundary-tolerance: must be in [0, 0.2] s");
+      } else if (flag == "--boundary-steps") {
+        const double n = number(flag, a.value(flag));
+        if (!(n >= 1 && n <= 20 && n == std::floor(n))) throw std::invalid_argument("--boundary-steps: must be an integer in [1, 20]");
+        spread_options.boundary_steps = static_cast<int>(n);
       } else if (flag == "--no-spread") {
         spread = false;
       } else if (flag == "--model") {

@@ -23,7 +23,7 @@ for p in r["hmt"]["parameters"]:
         assert p["boundary_spread"] is not None and p["stride_spread"] is not None, p
 assert all(s["rule"] == "force Fz" and s["fitted"] for t in r["trials"] for s in t["stances"]), r["trials"]
 assert r["hmt"]["rms"] <= r["hm"]["rms"], (r["hmt"]["rms"], r["hm"]["rms"])
-assert r["hmt"]["spread_refits"] == 3 + 8, r["hmt"]["spread_refits"]
+assert r["hmt"]["spread_refits"] == 3 + 24, r["hmt"]["spread_refits"]  # leave one out; 5 x 5 inward shifts but (0, 0)
 PY
 for f in fit_stances_1 fit_stances_3 fit_hm_ankle fit_hm_outline fit_hmt_ankle fit_hmt_outline; do
   test -s "$dir/plots/$f.png" && test -s "$dir/plots/$f.svg"

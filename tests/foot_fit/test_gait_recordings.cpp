@@ -219,17 +219,16 @@ TEST(GaitRecordings, EveryFootFitsWithinTheSeedsRanges) {
 
 // Item 3: with two strides both spreads are reported, and they are what the refits say they
 // are - the boundary spread the largest change over the boundary refits (a plate's stance only
-// shrinks: start later, end earlier, both), the stride spread the jackknife of the two
-// single-stride fits.
+// shrinks: start later, end earlier), the stride spread the jackknife of the two single-stride
+// fits. The same refits on one thread give the same spreads.
 TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
   const std::vector<cf::GaitTrial> trials{rajagopal_walk("R")};
   cf::RollingFootFit fit = cf::fit_rolling_foot(cf::stance_tracks(trials));
   const cf::FitSpread spread = cf::add_fit_spread(fit, trials);
-  ASSERT_EQ(spread.refits.size(), 5u);
-  EXPECT_EQ(spread.refits[2].what, "start +40 ms, end +0 ms");
-  EXPECT_EQ(spread.refits[3].what, "start +0 ms, end -40 ms");
-  EXPECT_EQ(spread.refits[4].what, "start +40 ms, end -40 ms");
-  EXPECT_EQ(fit.hmt.spread_refits, 5);
+  ASSERT_EQ(spread.refits.size(), 2u + 24u);  // leave one out; the 5 x 5 inward shifts but (0, 0)
+  EXPECT_EQ(spread.refits[2].what, "start +0 ms, end -10 ms");
+  EXPECT_EQ(spread.refits[25].what, "start +40 ms, end -40 ms");
+  EXPECT_EQ(fit.hmt.spread_refits, 26);
   EXPECT_EQ(fit.hmt.boundary_tolerance, 0.04);
   for (const cf::FootFitResult* f : {&fit.hm, &fit.hmt})
     for (std::size_t i = 0; i < f->estimates.size(); ++i) {
@@ -251,12 +250,22 @@ TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
       const double width = cf::seed_fitted_range(f->model, static_cast<int>(i)).width();
       EXPECT_EQ(e.flag.find("boundary spread") != std::string::npos, e.boundary_spread > 0.25 * width) << e.name << ": " << e.flag;
     }
+  cf::RollingFootFit serial = cf::fit_rolling_foot(cf::stance_tracks(trials));
+  cf::SpreadOptions one_thread;
+  one_thread.threads = 1;
+  cf::add_fit_spread(serial, trials, {}, one_thread);
+  for (std::size_t i = 0; i < fit.hmt.estimates.size(); ++i) {
+    const cf::ParameterEstimate &a = fit.hmt.estimates[i], &b = serial.hmt.estimates[i];
+    EXPECT_TRUE(a.boundary_spread == b.boundary_spread || (std::isnan(a.boundary_spread) && std::isnan(b.boundary_spread))) << a.name;
+  }
   // The conditional standard errors understate what a 40 ms boundary does (issue 56).
   EXPECT_GT(fit.hmt.estimates[foot::hmt::l_HA].boundary_spread, 3.0 * fit.hmt.estimates[foot::hmt::l_HA].standard_error);
   // One stride found by the kinematic rule: no stride spread, boundaries moved both ways.
   const std::vector<cf::GaitTrial> one{test_walking("L")};
   cf::RollingFootFit single = cf::fit_rolling_foot(cf::stance_tracks(one));
-  EXPECT_EQ(cf::add_fit_spread(single, one).refits.size(), 8u);
+  cf::SpreadOptions corners;
+  corners.boundary_steps = 1;
+  EXPECT_EQ(cf::add_fit_spread(single, one, {}, corners).refits.size(), 8u);  // the 3 x 3 shifts but (0, 0)
   EXPECT_TRUE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].stride_spread));
   EXPECT_FALSE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].boundary_spread));
 }

@@ -3,17 +3,19 @@
 #include "cyclopt/foot_fit/seed_fitted_ranges.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <thread>
 
 namespace cyclopt::foot_fit {
 namespace {
 
 std::string shift_text(double start, double end) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "start %+.0f ms, end %+.0f ms", 1e3 * start, 1e3 * end);
+  std::snprintf(buf, sizeof buf, "start %+.0f ms, end %+.0f ms", start == 0.0 ? 0.0 : 1e3 * start, end == 0.0 ? 0.0 : 1e3 * end);
   return buf;
 }
 
@@ -88,17 +90,27 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
   if (!(o.boundary_tolerance >= 0.0 && o.boundary_tolerance <= 0.2))
     throw std::invalid_argument("boundary_tolerance: " + std::to_string(o.boundary_tolerance) + " s is not in [0, 0.2] s");
   if (!(o.flag_fraction > 0.0)) throw std::invalid_argument("flag_fraction: must be > 0");
+  if (o.threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: every core)");
+  if (o.boundary_steps < 1 || o.boundary_steps > 20)
+    throw std::invalid_argument("boundary_steps: " + std::to_string(o.boundary_steps) + " is not in [1, 20]");
   const auto started = std::chrono::steady_clock::now();
-  FitSpread spread;
+  struct Job {
+    std::vector<AnkleTrack> tracks;
+    std::string what;
+    bool stride;
+  };
+  std::vector<Job> jobs;
   const std::vector<AnkleTrack> all = stance_tracks(trials);
   if (all.size() >= 2)
     for (std::size_t k = 0; k < all.size(); ++k) {
       std::vector<AnkleTrack> rest = all;
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(k));
-      spread.refits.push_back(refit(rest, fit_options, "without " + all[k].source, true));
+      jobs.push_back({rest, "without " + all[k].source, true});
     }
-  // Boundary refits, each once: a shift that moves no boundary (a plate's stance only shrinks)
-  // or moves them as an earlier one did is skipped.
+  // Boundary refits on the grid of start and end shifts {0, +-d/n, ..., +-d} (n =
+  // boundary_steps), each data set once: a shift that moves no boundary (a plate's stance only
+  // shrinks) or moves them as an earlier one did is skipped. Inward shifts come first, so a refit
+  // of plate stances is named by the shifts it made.
   auto windows = [](const std::vector<AnkleTrack>& tracks) {
     std::vector<std::pair<int, int>> w;
     for (const AnkleTrack& t : tracks) w.emplace_back(t.first_sample, t.last_sample);
@@ -106,19 +118,40 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
   };
   std::vector<std::vector<std::pair<int, int>>> seen{windows(all)};
   const double d = o.boundary_tolerance;
+  std::vector<double> later{0.0};
+  for (int i = 1; i <= o.boundary_steps; ++i) later.push_back(d * i / o.boundary_steps);
+  for (int i = 1; i <= o.boundary_steps; ++i) later.push_back(-d * i / o.boundary_steps);
   if (d > 0.0)
-    for (const auto& [ds, de] : {std::pair{-d, 0.0}, {d, 0.0}, {0.0, -d}, {0.0, d}, {-d, -d}, {-d, d}, {d, -d}, {d, d}}) {
-      std::vector<AnkleTrack> tracks;
-      for (const GaitTrial& t : trials)
-        for (std::size_t k = 0; k < t.stances.size(); ++k)
-          if (t.stances[k].complete()) {
-            const bool contact = t.stances[k].contact;
-            tracks.push_back(stance_track(t, static_cast<int>(k), contact ? std::max(ds, 0.0) : ds, contact ? std::min(de, 0.0) : de));
-          }
-      if (std::find(seen.begin(), seen.end(), windows(tracks)) != seen.end()) continue;
-      seen.push_back(windows(tracks));
-      spread.refits.push_back(refit(tracks, fit_options, shift_text(ds, de), false));
-    }
+    for (double ds : later)
+      for (double minus_de : later) {
+        const double de = -minus_de;
+        std::vector<AnkleTrack> tracks;
+        for (const GaitTrial& t : trials)
+          for (std::size_t k = 0; k < t.stances.size(); ++k)
+            if (t.stances[k].complete()) {
+              const bool contact = t.stances[k].contact;
+              tracks.push_back(
+                  stance_track(t, static_cast<int>(k), contact ? std::max(ds, 0.0) : ds, contact ? std::min(de, 0.0) : de));
+            }
+        if (std::find(seen.begin(), seen.end(), windows(tracks)) != seen.end()) continue;
+        seen.push_back(windows(tracks));
+        jobs.push_back({std::move(tracks), shift_text(ds, de), false});
+      }
+  // Independent solves: each thread takes the next job, so the result does not depend on the
+  // number of threads.
+  FitSpread spread;
+  spread.refits.resize(jobs.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t j = next++; j < jobs.size(); j = next++)
+      spread.refits[j] = refit(jobs[j].tracks, fit_options, jobs[j].what, jobs[j].stride);
+  };
+  const int threads = std::min<int>(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())),
+                                    static_cast<int>(jobs.size()));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
   write_spreads(fit.hm, spread.refits, &Refit::hm, &Refit::hm_converged, o);
   write_spreads(fit.hmt, spread.refits, &Refit::hmt, &Refit::hmt_converged, o);
   spread.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

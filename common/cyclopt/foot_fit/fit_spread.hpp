@@ -6,11 +6,14 @@
 // seed's three steps (section 4.2) on altered data:
 //  - over the strides, with K >= 2 complete stances: the jackknife standard error of the K fits
 //    that each leave one stance out, sqrt((K-1)/K sum (p_(k) - mean)^2);
-//  - over the boundaries: the largest change of a parameter when the start, the end, or both
-//    boundaries of every stance move by +-boundary_tolerance (up to 8 refits). A stance bounded
-//    by a loaded plate only shrinks (its start moves later, its end earlier): the rolling phase
-//    lies within the contact the plate measured, but how much of the contact's first and last
-//    tens of milliseconds (heel impact, toe flexion) is rigid rolling is uncertain.
+//  - over the boundaries: the largest change of a parameter when the start and the end of every
+//    stance move on a grid of steps boundary_tolerance / boundary_steps up to +-boundary_tolerance
+//    (9 x 9 - 1 = 80 refits by default). On real recordings the HMT fit hops between local
+//    optima as a boundary moves, so the change is not monotone: the four corners alone missed up
+//    to 4x, a 5 x 5 grid 1.7x the change a 10 ms grid shows (bench/results/foot_fit_real_data.txt).
+//    A stance bounded by a loaded plate only shrinks (start later, end earlier: 24 refits): the
+//    rolling phase lies within the contact the plate measured, but how much of the contact's
+//    first and last tens of milliseconds (heel impact, toe flexion) is rigid rolling is uncertain.
 // A parameter is flagged when it sits on a bound, or when a spread exceeds flag_fraction of the
 // range the seed's own fits of that parameter span (seed_fitted_ranges.hpp).
 
@@ -27,7 +30,9 @@ struct SpreadOptions {
   // from the force plates' (bench/results/foot_fit_real_data.txt); and where the foot loads the
   // plate, the first and last ~40 ms (heel impact, toe flexion) are not rigid rolling.
   double boundary_tolerance = 0.04;
+  int boundary_steps = 4;  // grid points per side: shifts of 10 ms at 40 ms
   double flag_fraction = 0.25;
+  int threads = 0;  // refits run in parallel, 0: one thread per core; the results do not depend on it
 };
 
 // One refit: which data, and its HM and HMT parameters. A refit that stops at the iteration
