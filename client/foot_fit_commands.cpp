@@ -61,6 +61,8 @@ or a long gap cuts is refused with the reason and not fitted.
   --boundary-steps N   grid points per side up to the tolerance (default 4: 80 refits per
                        kinematic stance set, 24 for force-plate stances, which only shrink)
   --no-spread          no refits: conditional standard errors only
+  --parameter-tolerance F  stop a fit when its Gauss-Newton step moves no parameter by F of its
+                       standard error (default 0.01; 0: only the decrease tests, as a foot_fit job)
   --model HM|HMT|both  which fits to report (default both; HMT always starts from HM)
   --no-toe-bound       drop the seed's l_MT <= z_min (4.18b)
   --save-foot FILE     write the fitted foot (HMT unless --model HM) as a foot spec JSON, usable as
@@ -183,6 +185,7 @@ int run_fit_command(int argc, char** argv) {
   std::vector<std::string> markers, files, forces;  // forces[k]: of files[k], or empty
   std::string model = "both", save, plot_dir, job_spec;
   bool json = false, toe_bound = true, spread = true;
+  double parameter_tolerance = 1e-2;  // arrow_least_squares.hpp: real recordings creep near sharp transitions
   ff::SpreadOptions spread_options;
   try {
     while (a.more()) {
@@ -232,6 +235,10 @@ int run_fit_command(int argc, char** argv) {
         const double n = number(flag, a.value(flag));
         if (!(n >= 1 && n <= 20 && n == std::floor(n))) throw std::invalid_argument("--boundary-steps: must be an integer in [1, 20]");
         spread_options.boundary_steps = static_cast<int>(n);
+      } else if (flag == "--parameter-tolerance") {
+        parameter_tolerance = number(flag, a.value(flag));
+        if (!(parameter_tolerance >= 0 && parameter_tolerance <= 1))
+          throw std::invalid_argument("--parameter-tolerance: must be in [0, 1]");
       } else if (flag == "--no-spread") {
         spread = false;
       } else if (flag == "--model") {
@@ -285,6 +292,7 @@ int run_fit_command(int argc, char** argv) {
     }
     ff::FootFitOptions options;
     options.toe_bound = toe_bound;
+    options.solver.parameter_tolerance = parameter_tolerance;
     ff::RollingFootFit fit = ff::fit_rolling_foot(tracks, options);
     ff::FitSpread refits;
     if (spread) refits = ff::add_fit_spread(fit, trials, options, spread_options);

@@ -217,6 +217,24 @@ TEST(GaitRecordings, EveryFootFitsWithinTheSeedsRanges) {
   }
 }
 
+// The statistical stop (ArrowOptions::parameter_tolerance) ends where the decrease tests end,
+// within a tenth of a standard error, and sooner (test_walking's right foot).
+TEST(GaitRecordings, TheStatisticalStopEndsWhereTheDecreaseTestsEnd) {
+  const std::vector<cf::AnkleTrack> tracks = cf::stance_tracks({test_walking("R")});
+  cf::FootFitOptions statistical, strict;
+  statistical.solver.parameter_tolerance = 1e-2;
+  strict.solver.max_iterations = 5000;
+  const cf::RollingFootFit a = cf::fit_rolling_foot(tracks, statistical), b = cf::fit_rolling_foot(tracks, strict);
+  ASSERT_TRUE(a.hmt.converged) << a.hmt.message;
+  ASSERT_TRUE(b.hmt.converged) << b.hmt.message;
+  EXPECT_LT(a.hmt.iterations, b.hmt.iterations);
+  for (std::size_t i = 0; i < b.hmt.estimates.size(); ++i) {
+    const cf::ParameterEstimate& e = b.hmt.estimates[i];
+    if (e.fixed || e.at_bound) continue;
+    EXPECT_LT(std::abs(a.hmt.parameters[static_cast<Eigen::Index>(i)] - e.value), 0.1 * e.standard_error) << e.name;
+  }
+}
+
 // Item 3: with two strides both spreads are reported, and they are what the refits say they
 // are - the boundary spread the largest change over the boundary refits (a plate's stance only
 // shrinks: start later, end earlier), the stride spread the jackknife of the two single-stride
