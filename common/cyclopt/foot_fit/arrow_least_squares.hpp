@@ -39,8 +39,7 @@ struct ArrowOptions {
   // a reported parameter by more than that share of its uncertainty. Near a sharp transition
   // (k -> 0) the Gauss-Newton model is poor and the decrease tests above take thousands of
   // iterations for changes in the seventh digit of the cost; cyclopt-foot fit uses 1e-2 on real
-  // recordings. 0 (the default) disables the test: the stored fits of foot_fit jobs keep the
-  // decrease tests, whose last digits a walker job on the fitted foot is sensitive to.
+  // recordings. 0 (the default) disables the test, so foot_fit jobs stop by the decrease tests.
   double parameter_tolerance = 0.0;
   double initial_damping = 1e-4;      // relative to the diagonal of J^T J
   double max_damping = 1e14;

@@ -9,8 +9,8 @@
 //  - over the boundaries: the largest change of a parameter when the start and the end of every
 //    stance move on a grid of steps boundary_tolerance / boundary_steps up to +-boundary_tolerance
 //    (9 x 9 - 1 = 80 refits by default). On real recordings the HMT fit hops between local
-//    optima as a boundary moves, so the change is not monotone: the four corners alone missed up
-//    to 4x, a 5 x 5 grid 1.7x the change a 10 ms grid shows (bench/results/foot_fit_real_data.txt).
+//    optima as a boundary moves, so the change is not monotone in the shift and the corners alone
+//    miss much of it (coverage: bench/results/foot_fit_real_data.txt).
 //    A stance bounded by a loaded plate only shrinks (start later, end earlier: 24 refits): the
 //    rolling phase lies within the contact the plate measured, but how much of the contact's
 //    first and last tens of milliseconds (heel impact, toe flexion) is rigid rolling is uncertain.
@@ -26,9 +26,10 @@
 namespace cyclopt::foot_fit {
 
 struct SpreadOptions {
-  // s: how far a stance boundary is uncertain. Kinematic heel strike and toe-off fall 20-60 ms
-  // from the force plates' (bench/results/foot_fit_real_data.txt); and where the foot loads the
-  // plate, the first and last ~40 ms (heel impact, toe flexion) are not rigid rolling.
+  // s: how far a stance boundary is uncertain. Kinematic heel strike and toe-off fall tens of
+  // milliseconds from the force plates' (bench/results/foot_fit_real_data.txt); and where the
+  // foot loads the plate, its first and last tens of milliseconds (heel impact, toe flexion) are
+  // not rigid rolling.
   double boundary_tolerance = 0.04;
   int boundary_steps = 4;  // grid points per side: shifts of 10 ms at 40 ms
   double flag_fraction = 0.25;

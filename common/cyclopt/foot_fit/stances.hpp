@@ -17,9 +17,8 @@ namespace cyclopt::foot_fit {
 struct StanceOptions {
   double force_threshold = 20.0;  // N: loaded plate (eq. 4.5 takes F != 0; 20 N is above plate noise)
   // Kinematic rule: a stance is a run of frames in which the ankle moves slower than
-  // max_rolling_speed and that holds a frame slower than still_speed (the flat foot). On
-  // OpenSim's motion_capture_walk this finds heel strike 20-40 ms and toe-off 30-60 ms before
-  // the force plates do (bench/results/foot_fit_real_data.txt).
+  // max_rolling_speed and that holds a frame slower than still_speed (the flat foot); its offsets
+  // from force plates: bench/results/foot_fit_real_data.txt.
   double max_rolling_speed = 2.0;  // m/s
   double still_speed = 0.25;       // m/s
   // A plate's loaded run belongs to this foot when its centre of pressure stays within this
