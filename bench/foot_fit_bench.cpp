@@ -3,14 +3,29 @@
 // of the lengths and gamma_F within 4 standard errors (the covariance sigma^2 (J^T J)^-1 of the
 // fit, i.e. a tolerance derived from the noise), the RMS residual against its expectation at
 // that noise, HMT never worse than HM, and the time per fit with the number of samples.
+//
+// Issue 56, `foot_fit_bench recordings TEST_WALKING.trc MOTION_CAPTURE_WALK.trc GRF_WALK.mot`:
+// OpenSim's public walking recordings. Per foot: the stances found, the fit and its time, the
+// spreads; the kinematic stance boundaries against the force plates'; acceptance 3, the change
+// of every parameter over a grid of moved stance boundaries (+-40 ms in 10 ms steps, cold fits
+// as a user moving the interval gets them) against the reported spreads; and the HM bias
+// (item 4): HM against HMT and against HM without the contact's first 40 ms.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/foot_fit/ankle_track.hpp"
+#include "cyclopt/foot_fit/fit_spread.hpp"
+#include "cyclopt/foot_fit/gait_trial_file.hpp"
+#include "cyclopt/foot_fit/marker_file.hpp"
+#include "cyclopt/foot_fit/opensim_storage_file.hpp"
 #include "cyclopt/foot_fit/rolling_foot_fit.hpp"
+#include "cyclopt/foot_fit/seed_fitted_ranges.hpp"
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "machine_info.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <cstdio>
 #include <string>
@@ -52,10 +67,207 @@ cf::FootFitOptions options_for(const foot::FootSpec& f, double z_min, std::strin
   return o;
 }
 
+// ---- issue 56: real recordings ----
+
+struct Foot {
+  std::string name;
+  cf::GaitTrial trial;
+};
+
+// What cyclopt-foot fit uses on recordings: the statistical stop of arrow_least_squares.hpp.
+cf::FootFitOptions recording_options() {
+  cf::FootFitOptions o;
+  o.solver.parameter_tolerance = 1e-2;
+  return o;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Lengths in mm, angles in rad, k in rad: the printed scale of parameter i.
+double shown(const cf::ParameterEstimate& e, double v) { return e.unit == "m" ? 1e3 * v : v; }
+
+void print_stances(const Foot& f) {
+  std::printf("%s: vertical axis %s, walking direction %.4f rad\n", f.name.c_str(), f.trial.ankle.vertical_rule.c_str(),
+              f.trial.ankle.walking_direction);
+  for (std::size_t k = 0; k < f.trial.stances.size(); ++k) {
+    const cf::Stance& s = f.trial.stances[k];
+    std::printf("  stance %zu %.3f-%.3f s, %d frames, %s: %s%s\n", k + 1, s.start, s.end, s.last - s.first + 1, s.rule.c_str(),
+                s.complete() ? "fitted" : "REFUSED ", s.refusal.c_str());
+  }
+}
+
+void print_fit_line(const cf::FootFitResult& f) {
+  std::printf("  %-3s %-13s RMS %.3f mm:", std::string(foot::to_string(f.model)).c_str(), f.converged ? "converged" : "NOT CONVERGED",
+              1e3 * f.rms);
+  for (const cf::ParameterEstimate& e : f.estimates)
+    if (!e.fixed) std::printf(" %s %.4g%s", e.name.c_str(), shown(e, e.value), e.at_bound ? " (bound)" : "");
+  std::printf("\n");
+}
+
+// Acceptance 3 on one foot: cold fits with every stance boundary moved on a 5 ms grid - twice as
+// fine as the spread's own 10 ms grid, so most of these fits are not among its refits - against
+// the reported spreads. `inward_only` keeps the shifts a loaded plate admits (start later, end
+// earlier); without it, plate stances are moved outwards too, which the spread does not claim.
+void boundary_grid(const Foot& f, const cf::RollingFootFit& fit, bool inward_only) {
+  std::vector<double> shifts;
+  for (int i = -8; i <= 8; ++i) shifts.push_back(0.005 * i);
+  std::vector<double> hm_dev(fit.hm.estimates.size(), 0.0), hmt_dev(fit.hmt.estimates.size(), 0.0);
+  int fits = 0, unconverged = 0, failed = 0;
+  for (double ds : shifts)
+    for (double de : shifts) {
+      if ((ds == 0.0 && de == 0.0) || (inward_only && (ds < 0.0 || de > 0.0))) continue;
+      ++fits;
+      try {
+        const cf::RollingFootFit g = cf::fit_rolling_foot(cf::stance_tracks({f.trial}, ds, de), recording_options());
+        unconverged += (g.hm.converged && g.hmt.converged) ? 0 : 1;
+        for (std::size_t i = 0; i < hm_dev.size(); ++i)
+          hm_dev[i] = std::max(hm_dev[i], std::abs(g.hm.parameters[i] - fit.hm.parameters[i]));
+        for (std::size_t i = 0; i < hmt_dev.size(); ++i)
+          hmt_dev[i] = std::max(hmt_dev[i], std::abs(g.hmt.parameters[i] - fit.hmt.parameters[i]));
+      } catch (const std::exception& e) {
+        ++failed;
+      }
+    }
+  std::printf("  grid %s: %d cold fits (%d with a fit not converged, counted where it stopped; %d without a start)\n",
+              inward_only ? "start 0..+40 ms x end -40..0 ms in 5 ms steps (inside the plate contact)"
+                          : "start and end -40..+40 ms in 5 ms steps",
+              fits, unconverged, failed);
+  std::printf("  %-4s %-8s %10s %10s %10s %10s %9s %s\n", "fit", "param", "value", "grid dev", "bound spr", "stride spr", "dev/spr",
+              "covered");
+  for (const auto& [r, dev] : {std::pair{&fit.hm, &hm_dev}, std::pair{&fit.hmt, &hmt_dev}})
+    for (std::size_t i = 0; i < dev->size(); ++i) {
+      const cf::ParameterEstimate& e = r->estimates[i];
+      if (e.fixed) continue;
+      const double reported = std::max(e.boundary_spread, std::isnan(e.stride_spread) ? 0.0 : e.stride_spread);
+      std::printf("  %-4s %-8s %10.4g %10.4g %10.4g %10.4g %9.2f %s\n", std::string(foot::to_string(r->model)).c_str(),
+                  e.name.c_str(), shown(e, e.value), shown(e, (*dev)[i]), shown(e, e.boundary_spread), shown(e, e.stride_spread),
+                  (*dev)[i] / reported, (*dev)[i] <= reported * (1.0 + 1e-9) ? "yes" : "NO");
+    }
+}
+
+// HM bias (item 4): HM residual in the first 40 ms of each stance against the rest, and HM refitted
+// without those 40 ms.
+void hm_bias(const Foot& f, const cf::RollingFootFit& fit) {
+  const std::vector<cf::AnkleTrack> tracks = cf::stance_tracks({f.trial});
+  double early2 = 0.0, late2 = 0.0;
+  int early = 0, late = 0;
+  for (std::size_t k = 0; k < tracks.size(); ++k)
+    for (int j = 0; j < tracks[k].samples(); ++j) {
+      const double d2 = (fit.hm.model_ankle(static_cast<int>(k), j) - Eigen::Vector2d(tracks[k].x[j], tracks[k].z[j])).squaredNorm();
+      if (tracks[k].time[j] < tracks[k].time.front() + 0.04) {
+        early2 += d2;
+        ++early;
+      } else {
+        late2 += d2;
+        ++late;
+      }
+    }
+  std::printf("  HM residual RMS: first 40 ms of the stances %.3f mm (%d samples), the rest %.3f mm (%d samples)\n",
+              1e3 * std::sqrt(early2 / early), early, 1e3 * std::sqrt(late2 / late), late);
+  const cf::RollingFootFit trimmed = cf::fit_rolling_foot(cf::stance_tracks({f.trial}, 0.04, 0.0), recording_options());
+  std::printf("  without the first 40 ms:\n");
+  print_fit_line(trimmed.hm);
+  print_fit_line(trimmed.hmt);
+  // Without the roll over the toes: each stance ends where the ankle, past its lowest point, has
+  // risen 20 mm (heel-off and the start of the forefoot roll kept).
+  std::vector<cf::AnkleTrack> no_toes = tracks;
+  for (cf::AnkleTrack& t : no_toes) {
+    const int low = static_cast<int>(std::min_element(t.z.begin(), t.z.end()) - t.z.begin());
+    int end = low;
+    while (end + 1 < t.samples() && t.z[end + 1] < t.z[low] + 0.02) ++end;
+    t.time.resize(end + 1);
+    t.x.resize(end + 1);
+    t.z.resize(end + 1);
+  }
+  const cf::RollingFootFit toeless = cf::fit_rolling_foot(no_toes, recording_options());
+  std::printf("  without the roll over the toes (ankle more than 20 mm above its lowest point after it):\n");
+  print_fit_line(toeless.hm);
+}
+
+int recordings(int argc, char** argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: foot_fit_bench recordings TEST_WALKING.trc MOTION_CAPTURE_WALK.trc GRF_WALK.mot\n");
+    return 2;
+  }
+  std::printf("foot_fit_bench recordings on %s, %s at start\n", cyclopt::bench::machine_line().c_str(),
+              cyclopt::bench::load_average().c_str());
+  for (int a = 2; a < 5; ++a) {
+    const std::string path = argv[a];
+    if (path.size() > 4 && path.substr(path.size() - 4) == ".mot") {
+      const cf::StorageTable t = cf::read_opensim_storage(path);
+      std::printf("read %s: %d rows at %.0f Hz, %zu columns\n", path.c_str(), t.rows(), 1.0 / (t.time[1] - t.time[0]), t.names.size() + 1);
+    } else {
+      const cf::MarkerTrial t = cf::read_marker_file(path);
+      std::printf("read %s: %d frames at %.0f Hz, %zu markers, unit %s\n", path.c_str(), t.samples(), 1.0 / (t.time[1] - t.time[0]),
+                  t.marker_names.size(), t.units.c_str());
+    }
+  }
+  std::vector<Foot> feet;
+  for (const char* side : {"R", "L"}) {
+    cf::GaitTrialOptions o;
+    o.ankle.markers = {std::string(side) + "LMAL", std::string(side) + "MMAL"};
+    feet.push_back({std::string("test_walking ") + (side[0] == 'R' ? "right" : "left") + " (malleoli, kinematics)",
+                    cf::read_gait_trial(argv[2], o)});
+  }
+  for (const char* side : {"R", "L"}) {
+    cf::GaitTrialOptions o;
+    o.ankle.markers = {std::string(side) + ".Ankle"};
+    o.forces_file = argv[4];
+    feet.push_back({std::string("motion_capture_walk ") + (side[0] == 'R' ? "right" : "left") + " (ankle marker, force plates)",
+                    cf::read_gait_trial(argv[3], o)});
+  }
+
+  std::printf("\nKinematic stance rule against the force plates (motion_capture_walk, %.1f m/s, flat-foot frame below %.2f m/s):\n",
+              cf::StanceOptions{}.max_rolling_speed, cf::StanceOptions{}.still_speed);
+  for (std::size_t f = 2; f < feet.size(); ++f) {
+    const std::vector<cf::Stance> kin = cf::kinematic_stances(feet[f].trial.ankle);
+    for (const cf::Stance& s : feet[f].trial.stances)
+      for (const cf::Stance& k : kin)
+        if (k.end > s.start && k.start < s.end)
+          std::printf("  %s: plate %.3f-%.3f s, kinematics %.3f-%.3f s: start %+.0f ms, end %+.0f ms%s\n", feet[f].name.c_str(),
+                      s.start, s.end, k.start, k.end, 1e3 * (k.start - s.start), 1e3 * (k.end - s.end),
+                      k.complete() ? "" : " (kinematic stance refused)");
+  }
+
+  for (const Foot& f : feet) {
+    std::printf("\n");
+    print_stances(f);
+    const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = cyclopt::bench::cpu_seconds();
+    cf::RollingFootFit fit = cf::fit_rolling_foot(cf::stance_tracks({f.trial}), recording_options());
+    const double fit_seconds = seconds_since(t0);
+    const cf::FitSpread spread = cf::add_fit_spread(fit, {f.trial}, recording_options());
+    std::printf("  time: fit %.3f s, spreads %.3f s (%zu refits), together %.3f s wall, %.3f s CPU; %s\n", fit_seconds, spread.seconds,
+                spread.refits.size(), seconds_since(t0), cyclopt::bench::cpu_seconds() - cpu0, cyclopt::bench::load_average().c_str());
+    print_fit_line(fit.hm);
+    print_fit_line(fit.hmt);
+    bool in_range = true;
+    for (int i : {foot::hmt::h_F, foot::hmt::l_HA, foot::hmt::l_HM, foot::hmt::l_MT, foot::hmt::gamma_F}) {
+      const cf::SeedRange r = cf::seed_fitted_range(foot::FootModel::hmt, i);
+      in_range = in_range && fit.hmt.parameters[i] >= r.low && fit.hmt.parameters[i] <= r.high;
+    }
+    std::printf("  HMT in the seed's ranges (h_F 61-116, l_HA 7-154, l_HM 161-379, l_MT 0-126 mm, gamma_F 0.52-1.57 rad): %s\n",
+                in_range ? "yes" : "NO");
+    for (const cf::Refit& r : spread.refits)
+      if (!r.note.empty()) std::printf("  refit %s: %s\n", r.what.c_str(), r.note.c_str());
+    const bool contact = f.trial.complete_stances() > 0 && f.trial.stances[0].contact;
+    boundary_grid(f, fit, contact);
+    if (contact) boundary_grid(f, fit, false);
+    hm_bias(f, fit);
+    std::fflush(stdout);
+  }
+  std::printf("\n%s at end\n", cyclopt::bench::load_average().c_str());
+  return 0;
+}
+
 }  // namespace
 
-// Usage: foot_fit_bench [STRIDE]: every STRIDE-th catalogue foot (default 1: all 216).
+// Usage: foot_fit_bench [STRIDE]: every STRIDE-th catalogue foot (default 1: all 216);
+// foot_fit_bench recordings ...: the real recordings (above).
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "recordings") == 0) return recordings(argc, argv);
   const int stride = argc > 1 ? std::max(1, std::atoi(argv[1])) : 1;
   std::printf("foot_fit_bench on %s, %s at start\n", cyclopt::bench::machine_line().c_str(), cyclopt::bench::load_average().c_str());
   std::printf("synthetic trials: 3 per foot, 200 Hz, marker noise %.2f mm per coordinate (ankle = mean of two markers: "

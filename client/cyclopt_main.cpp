@@ -5,7 +5,7 @@
 #include "cyclopt/cli/version.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/foot_fit/ankle_track.hpp"
-#include "cyclopt/foot_fit/marker_file.hpp"
+#include "cyclopt/foot_fit/gait_trial_file.hpp"
 #include "cyclopt/giant_swing/model.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_comparison_figures.hpp"
@@ -269,8 +269,10 @@ std::string foot_fit_spec_text(const Options& o) {
   std::vector<cyclopt::foot_fit::AnkleTrack> tracks;
   std::stringstream ss(o.trials);
   try {
-    for (std::string file; std::getline(ss, file, ',');)
-      tracks.push_back(cyclopt::foot_fit::ankle_track(cyclopt::foot_fit::read_marker_file(file)));
+    std::vector<cyclopt::foot_fit::GaitTrial> trials;
+    for (std::string file; std::getline(ss, file, ',');) trials.push_back(cyclopt::foot_fit::read_gait_trial(file));
+    tracks = cyclopt::foot_fit::stance_tracks(trials);  // complete stances only
+    if (tracks.empty()) throw std::runtime_error("no complete stance (see cyclopt-foot fit for the reasons)");
   } catch (const std::exception& e) {
     throw LocalRejection(std::string("--trials ") + e.what() + "; nothing was sent");
   }

@@ -98,8 +98,9 @@ TEST(MarkerFiles, TrcAndCsvRoundTrip) {
 TEST(MarkerFiles, MalformedTrcRejectedWithLineAndColumn) {
   const std::string good = trc_text(sample_trial());
   // Data rows start at line 7 (five header lines and a blank one); LMAL X is column 3.
-  expect_error_at(read_trc_text, with_field(good, 9, 4, "nan", '\t'), 9, 4, "not finite");
-  expect_error_at(read_trc_text, with_field(good, 9, 5, "", '\t'), 9, 5, "empty field");
+  expect_error_at(read_trc_text, with_field(good, 9, 4, "inf", '\t'), 9, 4, "not finite");
+  expect_error_at(read_trc_text, with_field(good, 9, 2, "", '\t'), 9, 2, "empty field");
+  expect_error_at(read_trc_text, with_field(good, 9, 2, "nan", '\t'), 9, 2, "not finite");
   expect_error_at(read_trc_text, with_field(good, 12, 2, "0.001", '\t'), 12, 2, "does not increase");
   expect_error_at(read_trc_text, with_field(good, 3, 5, "furlong", '\t'), 3, 5, "not one of mm, cm, m");
   expect_error_at(read_trc_text, with_field(good, 3, 5, "m", '\t'), 7, 3, "the stated unit 'm' is wrong");
@@ -119,8 +120,10 @@ TEST(MarkerFiles, MalformedTrcRejectedWithLineAndColumn) {
 
 TEST(MarkerFiles, MalformedCsvRejectedWithLineAndColumn) {
   const std::string good = csv_text(sample_trial());
-  // Line 1 "# units", 2 "# source", 3 header, data from line 4; columns: time, LMAL_x..., Fz.
-  expect_error_at(read_csv_text, with_field(good, 6, 3, "NaN", ','), 6, 3, "not finite");
+  // Line 1 "# units", 2 "# source", 3 header, data from line 4; columns: time, LMAL_x..., Fz (8).
+  expect_error_at(read_csv_text, with_field(good, 6, 1, "NaN", ','), 6, 1, "not finite");
+  expect_error_at(read_csv_text, with_field(good, 6, 8, "NaN", ','), 6, 8, "Fz: 'NaN' is not finite");
+  expect_error_at(read_csv_text, with_field(good, 6, 3, "-1e999", ','), 6, 3, "not a number");
   expect_error_at(read_csv_text, with_field(good, 8, 1, "0", ','), 8, 1, "does not increase");
   expect_error_at(read_csv_text, with_field(good, 3, 4, "LMAL_q", ','), 3, 0, "has no column LMAL_z");
   std::string metres = good;
@@ -128,6 +131,53 @@ TEST(MarkerFiles, MalformedCsvRejectedWithLineAndColumn) {
   expect_error_at(read_csv_text, metres, 4, 2, "the stated unit 'm' is wrong");
   std::string no_units = good.substr(good.find('\n') + 1);
   expect_error_at(read_csv_text, no_units, 1, 0, "units not stated");
+}
+
+// Occluded markers: a blank or NaN coordinate, or a marker at exactly (0, 0, 0), is a missing
+// sample, not a malformed file (issue 56: one NaN in any marker used to reject the trial).
+TEST(MarkerFiles, MissingSamplesAreReadAsNaN) {
+  const std::string good = trc_text(sample_trial());
+  // Line 9 is sample 2: LMAL X (column 3) NaN, MMAL (columns 6-8) all zero, line 10 LMAL Y blank.
+  std::string text = with_field(good, 9, 3, "NaN", '\t');
+  for (int c = 6; c <= 8; ++c) text = with_field(text, 9, c, "0.000", '\t');
+  text = with_field(text, 10, 4, "", '\t');
+  const cf::MarkerTrial t = read_trc_text(text);
+  EXPECT_FALSE(t.present(0, 2));
+  EXPECT_FALSE(t.present(1, 2));
+  EXPECT_FALSE(t.present(0, 3));
+  EXPECT_TRUE(t.present(1, 3));
+  EXPECT_TRUE(std::isnan(t.positions[0][2].y())) << "a sample is missing as a whole";
+  // A single zero coordinate is a coordinate, not a gap.
+  const cf::MarkerTrial one_zero = read_trc_text(with_field(good, 9, 5, "0", '\t'));
+  EXPECT_TRUE(one_zero.present(0, 2));
+  EXPECT_EQ(one_zero.positions[0][2].z(), 0.0);
+  // The same in CSV (line 4 is sample 0; LMAL_x is column 2).
+  const cf::MarkerTrial csv = read_csv_text(with_field(csv_text(sample_trial()), 5, 2, "", ','));
+  EXPECT_FALSE(csv.present(0, 1));
+  EXPECT_TRUE(csv.present(1, 1));
+}
+
+// A header padded with runs of tabs (OpenSim's motion_capture_walk.trc), and rows that stop
+// early where the last markers are missing.
+TEST(MarkerFiles, TrcHeaderPaddedWithTabsAndShortRows) {
+  const std::string text =
+      "PathFileType  4\t(X/Y/Z) C:\\walk.trc\n"
+      "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
+      "  100.0\t\t  100.0\t\t      3\t\t      2\t\t mm\t  100.0\t      1\t      3\n"
+      "Frame#\tTime\tR.Ankle\t\t\tL.Ankle\t\t\t\n"
+      "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\t\n"
+      "\n"
+      "1\t0.00\t-838.277\t272.831\t-132.182\t-608.572\t108.068\t-342.461\n"
+      "2\t0.01\t-807.973\t266.653\t-130.959\n"
+      "3\t0.02\t-777.5\t260.0\t-130.0\t-608.3\t108.3\t-342.5\t\t\n";
+  const cf::MarkerTrial t = read_trc_text(text);
+  EXPECT_EQ(t.units, "mm");
+  ASSERT_EQ(t.marker_names, (std::vector<std::string>{"R.Ankle", "L.Ankle"}));
+  ASSERT_EQ(t.samples(), 3);
+  EXPECT_NEAR(t.positions[0][1].x(), -0.807973, 1e-12);
+  EXPECT_FALSE(t.present(1, 1));
+  EXPECT_TRUE(t.present(1, 2));
+  expect_error_at(read_trc_text, text.substr(0, text.size() - 1) + "\t7\n", 9, 11, "the header names 2 markers");
 }
 
 TEST(AnkleTrack, RollingPhaseFromForceKinematicsAndInterval) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace cyclopt::foot_fit {
@@ -82,11 +83,15 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
     if (lambda < 0.0) lambda = o.initial_damping;
     // The step of the damped normal equations at `lam` (projected onto the bounds when
     // `project`) and the decrease the Gauss-Newton model predicts for it: -(g^T d + 1/2 |J d|^2).
+    // With `in_standard_errors`, also the largest |step| of a free global in units of its
+    // standard error, sigma^2 (S_f^-1)_aa with sigma^2 = |r|^2 / (2N - N - F) (residuals minus
+    // unknowns).
     struct Step {
       Eigen::VectorXd global, local;
       double predicted;
+      double largest_in_standard_errors = std::numeric_limits<double>::quiet_NaN();
     };
-    auto step_at = [&](double lam, bool project) {
+    auto step_at = [&](double lam, bool project, bool in_standard_errors = false) {
       Eigen::VectorXd rhs;
       const Eigen::MatrixXd S = schur(nb, dl, dg, lam, &rhs);
       std::vector<Eigen::Index> idx;
@@ -100,8 +105,17 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
         for (Eigen::Index b = 0; b < F; ++b) Sf(a, b) = S(idx[a], idx[b]);
       }
       Step st{Eigen::VectorXd::Zero(G), Eigen::VectorXd(N), 0.0};
-      const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(Eigen::LDLT<Eigen::MatrixXd>(Sf).solve(rf)) : Eigen::VectorXd();
+      const Eigen::LDLT<Eigen::MatrixXd> ldlt(Sf);
+      const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(ldlt.solve(rf)) : Eigen::VectorXd();
       for (Eigen::Index a = 0; a < F; ++a) st.global[idx[a]] = xf[a];
+      const Eigen::Index dof = N - F;
+      if (in_standard_errors && F > 0 && dof > 0) {
+        const double sigma2 = 2.0 * s.cost / double(dof);
+        const Eigen::VectorXd variance = sigma2 * ldlt.solve(Eigen::MatrixXd::Identity(F, F)).diagonal();
+        st.largest_in_standard_errors = 0.0;
+        for (Eigen::Index a = 0; a < F; ++a)
+          st.largest_in_standard_errors = std::max(st.largest_in_standard_errors, std::abs(xf[a]) / std::sqrt(variance[a]));
+      }
       if (project) st.global = (global + st.global).cwiseMax(lower).cwiseMin(upper) - global;
       for (Eigen::Index j = 0; j < N; ++j)
         st.local[j] = -(nb.local_gradient[j] + nb.B.row(j).dot(st.global)) / (nb.a[j] + lam * dl[j]);
@@ -116,11 +130,19 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
     };
     // Stationarity: the unprojected Gauss-Newton step in the free unknowns, 1/2 g^T (J^T J)^-1 g,
     // promises almost nothing (projection could only lower a decrease that is already tiny).
-    const Step gauss_newton = step_at(1e-12, false);
+    const Step gauss_newton = step_at(1e-12, false, o.parameter_tolerance > 0.0);
     if (gauss_newton.global.allFinite() && gauss_newton.local.allFinite() &&
         gauss_newton.predicted >= 0.0 && gauss_newton.predicted <= o.function_tolerance * s.cost) {
       s.converged = true;
       s.message = "Gauss-Newton predicted decrease below function_tolerance * cost";
+      break;
+    }
+    // Statistical stationarity: the Gauss-Newton step would move no free global by as much as
+    // parameter_tolerance of its standard error.
+    if (gauss_newton.global.allFinite() && gauss_newton.predicted >= 0.0 &&
+        gauss_newton.largest_in_standard_errors <= o.parameter_tolerance) {
+      s.converged = true;
+      s.message = "Gauss-Newton step below parameter_tolerance standard errors";
       break;
     }
     bool accepted = false;

@@ -19,6 +19,15 @@ inline std::vector<std::string_view> split_fields(std::string_view line, char de
   return fields;
 }
 
+// The non-empty fields of a line whose fields are separated by runs of `delimiter` (headers
+// padded with extra tabs, e.g. OpenSim's motion_capture_walk.trc).
+inline std::vector<std::string_view> split_on_runs(std::string_view line, char delimiter) {
+  std::vector<std::string_view> fields;
+  for (std::string_view f : split_fields(line, delimiter))
+    if (!f.empty()) fields.push_back(f);
+  return fields;
+}
+
 inline bool is_blank(std::string_view line) {
   return line.find_first_not_of(" \t\r") == std::string_view::npos;
 }

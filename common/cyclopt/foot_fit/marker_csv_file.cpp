@@ -116,8 +116,8 @@ MarkerTrial read_marker_csv(std::istream& in, const std::string& source, const s
     for (std::size_t m = 0; m < columns.size(); ++m) {
       Eigen::Vector3d p;
       for (int a = 0; a < 3; ++a)
-        p[a] = scale * parse_number(f[columns[m][a] - 1], source, line_no, columns[m][a], trimmed(header[columns[m][a] - 1]));
-      t.positions[m].push_back(p);
+        p[a] = scale * parse_coordinate(f[columns[m][a] - 1], source, line_no, columns[m][a], trimmed(header[columns[m][a] - 1]));
+      t.positions[m].push_back(marker_sample(p));
     }
     for (std::size_t c = 0; c < analog_columns.size(); ++c)
       t.analog[c].push_back(parse_number(f[analog_columns[c] - 1], source, line_no, analog_columns[c], t.analog_names[c]));
@@ -148,7 +148,7 @@ void write_marker_csv(const MarkerTrial& t, std::ostream& out, const std::string
     for (const auto& marker : t.positions)
       for (int a = 0; a < 3; ++a) {
         std::snprintf(buf, sizeof buf, ",%.8f", marker[i][a] * per_unit);
-        out << buf;
+        out << (marker[i].allFinite() ? buf : ",");  // a missing sample as empty fields
       }
     for (const auto& channel : t.analog) {
       std::snprintf(buf, sizeof buf, ",%.6g", channel[i]);

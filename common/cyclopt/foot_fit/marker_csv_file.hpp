@@ -19,8 +19,9 @@ namespace cyclopt::foot_fit {
 
 // Reads a CSV trial. `units` states the unit when the file has no "# units:" line; a file whose
 // own statement disagrees with `units` is rejected. Throws TrialFormatError naming file, line
-// and column (missing unit, a marker without all three axes, a short row, an empty / non-numeric
-// / NaN value, time that does not increase, implausible units).
+// and column (missing unit, a marker without all three axes, a short row, a non-numeric value,
+// an empty / NaN time or analog value, time that does not increase, implausible units). Empty or
+// NaN marker coordinates are missing samples (marker_trial.hpp).
 MarkerTrial read_marker_csv(const std::string& path, const std::optional<std::string>& units = std::nullopt);
 MarkerTrial read_marker_csv(std::istream& in, const std::string& source,
                             const std::optional<std::string>& units = std::nullopt);

@@ -9,6 +9,7 @@
 #include "cyclopt/foot_fit/arrow_least_squares.hpp"
 #include "cyclopt/foot_fit/circle_fit_start.hpp"
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,12 @@ struct ParameterEstimate {
   double standard_error = 0.0;  // from sigma^2 (J^T J)^-1 of the reduced problem; NaN if held
   bool fixed = false;           // lower == upper
   bool at_bound = false;        // held on a bound at the solution
+  // Empirical spreads (fit_spread.hpp), NaN until estimated: over the strides (jackknife
+  // standard error) and over the stance boundaries (largest change); `flag` says why the
+  // parameter is not well determined, empty when nothing is wrong.
+  double stride_spread = std::numeric_limits<double>::quiet_NaN();
+  double boundary_spread = std::numeric_limits<double>::quiet_NaN();
+  std::string flag;
 };
 
 struct TrialResidual {
@@ -71,6 +78,10 @@ struct FootFitResult {
   int iterations = 0;
   std::string message;
   double seconds = 0.0;
+  // The refits behind the estimates' spreads (fit_spread.hpp): how many count and how many of
+  // them stopped unconverged; the boundary tolerance (s). 0, 0, NaN until estimated.
+  int spread_refits = 0, spread_unconverged = 0;
+  double boundary_tolerance = std::numeric_limits<double>::quiet_NaN();
 
   foot::FootSpec spec(const std::string& name = {}) const;
   // Model ankle [x, z] of sample j of trial k at the fitted angle (eq. 4.15 / 4.20).

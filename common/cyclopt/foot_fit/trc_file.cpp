@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <istream>
+#include <limits>
 #include <ostream>
 
 namespace cyclopt::foot_fit {
@@ -27,8 +28,10 @@ MarkerTrial read_trc(std::istream& in, const std::string& source) {
       throw TrialFormatError(source, l + 1, 0, "the file ends inside the five-line .trc header");
   if (header[0].rfind("PathFileType", 0) != 0)
     throw TrialFormatError(source, 1, 1, "a .trc file starts with 'PathFileType'");
-  const std::vector<std::string_view> keys = split_fields(header[1], '\t');
-  const std::vector<std::string_view> values = split_fields(header[2], '\t');
+  // Keys and values are matched by position among the non-empty fields: some exporters pad
+  // them with extra tabs, differently on the two lines.
+  const std::vector<std::string_view> keys = split_on_runs(header[1], '\t');
+  const std::vector<std::string_view> values = split_on_runs(header[2], '\t');
   auto header_value = [&](std::string_view key) -> std::pair<std::string, int> {
     for (std::size_t c = 0; c < keys.size(); ++c)
       if (trimmed(keys[c]) == key) {
@@ -51,19 +54,12 @@ MarkerTrial read_trc(std::istream& in, const std::string& source) {
   const double declared_markers = parse_number(markers_text, source, 3, markers_column, "NumMarkers");
 
   t.marker_header_line = 4;
-  const std::vector<std::string_view> names = split_fields(header[3], '\t');
-  if (names.size() < 2 || trimmed(names[0]) != "Frame#" || trimmed(names[1]) != "Time")
+  std::vector<std::string> names;  // the non-blank fields: Frame#, Time, then one name per marker
+  for (std::string_view f : split_on_runs(header[3], '\t'))
+    if (!is_blank(f)) names.push_back(trimmed(f));
+  if (names.size() < 2 || names[0] != "Frame#" || names[1] != "Time")
     throw TrialFormatError(source, 4, 1, "the fourth header line starts with 'Frame#' and 'Time'");
-  for (std::size_t c = 2; c < names.size(); c += 3) {
-    const std::string n = trimmed(names[c]);
-    if (n.empty()) {
-      bool rest_blank = true;
-      for (std::size_t r = c; r < names.size(); ++r) rest_blank = rest_blank && is_blank(names[r]);
-      if (rest_blank) break;
-      throw TrialFormatError(source, 4, int(c) + 1, "marker name missing (names are every third column from 3)");
-    }
-    t.marker_names.push_back(n);
-  }
+  t.marker_names.assign(names.begin() + 2, names.end());
   if (static_cast<double>(t.marker_names.size()) != declared_markers)
     throw TrialFormatError(source, 3, markers_column,
                            "NumMarkers says " + markers_text + " but line 4 names " + std::to_string(t.marker_names.size()));
@@ -79,18 +75,26 @@ MarkerTrial read_trc(std::istream& in, const std::string& source) {
   while (std::getline(in, line)) {
     ++line_no;
     if (is_blank(line)) continue;
+    // Data rows keep one tab per field: an empty field is a missing coordinate. Exporters drop
+    // the empty fields of occluded markers at the end of a row, so a short row is read as such.
     const std::vector<std::string_view> f = split_fields(line, '\t');
-    if (static_cast<int>(f.size()) < 2 + 3 * markers)
-      throw TrialFormatError(source, line_no, int(f.size()) + 1,
-                             "row has " + std::to_string(f.size()) + " fields, expected " + std::to_string(2 + 3 * markers));
+    if (f.size() < 2) throw TrialFormatError(source, line_no, int(f.size()) + 1, "row has no Time field");
+    for (std::size_t c = 2 + 3 * markers; c < f.size(); ++c)
+      if (!is_blank(f[c]))
+        throw TrialFormatError(source, line_no, int(c) + 1,
+                               "row has " + std::to_string(f.size()) + " fields, the header names " + std::to_string(markers) +
+                                   " markers (" + std::to_string(2 + 3 * markers) + " fields)");
     parse_number(f[0], source, line_no, 1, "Frame#");
     t.time.push_back(parse_number(f[1], source, line_no, 2, "Time"));
     t.line_of_sample.push_back(line_no);
     for (int m = 0; m < markers; ++m) {
       Eigen::Vector3d p;
-      for (int a = 0; a < 3; ++a)
-        p[a] = scale * parse_number(f[2 + 3 * m + a], source, line_no, column_of[m][a], t.marker_names[m] + " " + kAxis[a]);
-      t.positions[m].push_back(p);
+      for (int a = 0; a < 3; ++a) {
+        const std::size_t c = 2 + 3 * m + a;
+        p[a] = c < f.size() ? scale * parse_coordinate(f[c], source, line_no, column_of[m][a], t.marker_names[m] + " " + kAxis[a])
+                            : std::numeric_limits<double>::quiet_NaN();
+      }
+      t.positions[m].push_back(marker_sample(p));
     }
   }
   if (static_cast<double>(t.samples()) != declared_frames)
@@ -127,7 +131,7 @@ void write_trc(const MarkerTrial& t, std::ostream& out, const std::string& units
     for (const auto& marker : t.positions)
       for (int a = 0; a < 3; ++a) {
         std::snprintf(buf, sizeof buf, "\t%.8f", marker[i][a] * per_unit);
-        out << buf;
+        out << (marker[i].allFinite() ? buf : "\t");  // a missing sample as empty fields
       }
     out << "\n";
   }

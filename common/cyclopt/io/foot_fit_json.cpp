@@ -93,7 +93,11 @@ records::FootFitRecord foot_fit_record(const foot_fit::FootFitResult& f) {
   r.max_residual = f.max_residual;
   r.noise_estimate = f.noise_estimate;
   for (const foot_fit::ParameterEstimate& e : f.estimates)
-    r.parameters.push_back({e.name, e.unit, e.value, e.lower, e.upper, e.standard_error, e.fixed, e.at_bound});
+    r.parameters.push_back({e.name, e.unit, e.value, e.lower, e.upper, e.standard_error, e.fixed, e.at_bound,
+                            e.stride_spread, e.boundary_spread, e.flag});
+  r.spread_refits = f.spread_refits;
+  r.spread_unconverged = f.spread_unconverged;
+  r.boundary_tolerance = f.boundary_tolerance;
   for (std::size_t k = 0; k < f.trials.size(); ++k)
     r.trials.push_back({f.trials[k].source, f.trials[k].samples, f.trials[k].rms, f.trials[k].max, f.x_off[k]});
   for (std::size_t c = 0; c < f.convexity.names.size(); ++c) r.convexity.push_back({f.convexity.names[c], f.convexity.values[c]});
@@ -124,7 +128,11 @@ foot_fit::FootFitResult foot_fit_result(const records::FootFitRecord& r, const r
   f.model = spec.model;
   f.parameters = spec.parameters;
   for (const records::FittedParameterRecord& p : r.parameters)
-    f.estimates.push_back({p.name, p.unit, p.value, p.lower, p.upper, p.standard_error, p.fixed, p.at_bound});
+    f.estimates.push_back({p.name, p.unit, p.value, p.lower, p.upper, p.standard_error, p.fixed, p.at_bound,
+                           p.stride_spread, p.boundary_spread, p.flag});
+  f.spread_refits = r.spread_refits;
+  f.spread_unconverged = r.spread_unconverged;
+  f.boundary_tolerance = r.boundary_tolerance;
   for (std::size_t k = 0; k < r.trials.size(); ++k) {
     const std::vector<double>& theta = angles.theta[k];
     if (static_cast<int>(theta.size()) != r.trials[k].samples)

@@ -7,6 +7,7 @@
 #include "cyclopt/records/foot_fit_record.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
@@ -28,24 +29,69 @@ std::pair<double, double> fitted_angle_range(const foot_fit::FootFitResult& fit)
 
 }  // namespace
 
+LineChart stance_chart(const foot_fit::GaitTrial& trial, int first_track) {
+  const foot_fit::AnkleSeries& a = trial.ankle;
+  LineChart chart;
+  chart.axes = {a.source + ": ankle height and stances (" + std::to_string(trial.complete_stances()) + " of " +
+                    std::to_string(trial.stances.size()) + " fitted)",
+                "time t (s)", "ankle height z (m)", true};
+  chart.x_range = Range{a.time.front(), a.time.back()};
+  Series all{"ankle", a.time, {}, false, false, Color{0.6, 0.6, 0.6, 1}};
+  for (int i = 0; i < a.samples(); ++i) all.y.push_back(a.present(i) ? a.height(i) : std::nan(""));
+  chart.series.push_back(all);
+  int track = first_track;
+  for (std::size_t k = 0; k < trial.stances.size(); ++k) {
+    const foot_fit::Stance& s = trial.stances[k];
+    Series window;
+    char label[200];
+    if (s.complete()) {
+      std::snprintf(label, sizeof label, "stance %zu, %s: fitted", k + 1, s.rule.c_str());
+      window = {label, {}, {}, true, false, palette(track++)};
+    } else {
+      std::string why = s.refusal.substr(0, s.refusal.find('('));
+      while (!why.empty() && why.back() == ' ') why.pop_back();
+      std::snprintf(label, sizeof label, "stance %zu, %s: refused, %s", k + 1, s.rule.c_str(), why.c_str());
+      window = {label, {}, {}, false, true, Color{0.84, 0.15, 0.16, 1}};
+    }
+    for (int i = s.first; i <= s.last; ++i) {
+      window.x.push_back(a.time[i]);
+      window.y.push_back(a.present(i) ? a.height(i) : std::nan(""));
+    }
+    chart.series.push_back(window);
+  }
+  return chart;
+}
+
+std::vector<Figure> stance_figures(const std::vector<foot_fit::GaitTrial>& trials) {
+  std::vector<Figure> out;
+  int track = 0;
+  for (std::size_t k = 0; k < trials.size(); ++k) {
+    LineChart chart = stance_chart(trials[k], track);
+    track += trials[k].complete_stances();
+    out.push_back({"fit_stances_" + std::to_string(k + 1), chart.axes.title, std::move(chart), RenderOptions{1000, 500}});
+  }
+  return out;
+}
+
 Scene fitted_ankle_scene(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit) {
   Scene scene;
   char title[160];
   std::snprintf(title, sizeof title, "%s fit: ankle of %zu trial(s), RMS %.3f mm (Fig. 4.%da)", model_name(fit).c_str(),
                 tracks.size(), 1e3 * fit.rms, fit.model == foot::FootModel::hm ? 3 : 4);
   scene.axes = {title, "x - x_off (m)", "ankle height z (m)", true};
-  const Color measured{0.12, 0.47, 0.71, 1}, model{0.17, 0.63, 0.17, 1};
+  const Color model{0.1, 0.1, 0.1, 1};
   for (std::size_t k = 0; k < tracks.size(); ++k)
     for (int j = 0; j < tracks[k].samples(); ++j) {
-      scene.markers.push_back({tracks[k].x[j] - fit.x_off[k], tracks[k].z[j], measured, 2.5, "measured ankle"});
+      scene.markers.push_back({tracks[k].x[j] - fit.x_off[k], tracks[k].z[j], palette(static_cast<int>(k)), 2.5,
+                               "measured: " + tracks[k].source});
       const Eigen::Vector2d m = fit.model_ankle(static_cast<int>(k), j);
-      scene.markers.push_back({m.x() - fit.x_off[k], m.y(), model, 1.5, "model at fitted theta_F"});
+      scene.markers.push_back({m.x() - fit.x_off[k], m.y(), model, 1.2, "model at fitted theta_F"});
     }
   // The model's ankle trajectory over the fitted angles, eq. (4.15) / (4.20).
   const foot::FootProfile<double> prof = foot::make_profile(fit.model, fit.parameters);
   const double f0 = foot::rolling_contact(prof, 0.0).F;
   const auto [lo, hi] = fitted_angle_range(fit);
-  Shape curve{{}, model, 1.2, false, false, std::nullopt, "model trajectory"};
+  Shape curve{{}, Color{0.17, 0.63, 0.17, 1}, 1.2, false, false, std::nullopt, "model trajectory"};
   for (int i = 0; i <= 400; ++i) {
     const foot::RollingContact<double> c = foot::rolling_contact(prof, lo + (hi - lo) * i / 400.0);
     curve.points.push_back({c.F - f0, c.dF});

@@ -29,7 +29,10 @@ void to_json(nlohmann::json& j, const FootFitRecord& f) {
                           {"upper", finite_or_null(p.upper)},
                           {"standard_error", finite_or_null(p.standard_error)},
                           {"fixed", p.fixed},
-                          {"at_bound", p.at_bound}});
+                          {"at_bound", p.at_bound},
+                          {"stride_spread", finite_or_null(p.stride_spread)},
+                          {"boundary_spread", finite_or_null(p.boundary_spread)},
+                          {"flag", p.flag}});
   nlohmann::json trials = nlohmann::json::array();
   for (const FittedTrialRecord& t : f.trials)
     trials.push_back({{"source", t.source},
@@ -54,7 +57,10 @@ void to_json(nlohmann::json& j, const FootFitRecord& f) {
        {"trials", trials},
        {"convex", f.convex},
        {"convexity", convexity},
-       {"foot", f.foot}};
+       {"foot", f.foot},
+       {"spread_refits", f.spread_refits},
+       {"spread_unconverged", f.spread_unconverged},
+       {"boundary_tolerance", finite_or_null(f.boundary_tolerance)}};
 }
 
 void from_json(const nlohmann::json& j, FootFitRecord& f) {
@@ -71,9 +77,18 @@ void from_json(const nlohmann::json& j, FootFitRecord& f) {
   f.max_residual = number(j, r, "max_residual");
   f.noise_estimate = number(j, r, "noise_estimate");
   f.parameters = list<FittedParameterRecord>(j, r, "parameters", [](const nlohmann::json& p, const std::string& at) {
-    return FittedParameterRecord{text(p, at, "name"),      text(p, at, "unit"),           number(p, at, "value"),
-                                 number(p, at, "lower"),   number(p, at, "upper"),        number(p, at, "standard_error"),
-                                 boolean(p, at, "fixed"), boolean(p, at, "at_bound")};
+    // The spreads and flag are absent in records stored before them.
+    return FittedParameterRecord{text(p, at, "name"),
+                                 text(p, at, "unit"),
+                                 number(p, at, "value"),
+                                 number(p, at, "lower"),
+                                 number(p, at, "upper"),
+                                 number(p, at, "standard_error"),
+                                 boolean(p, at, "fixed"),
+                                 boolean(p, at, "at_bound"),
+                                 optional_number(p, at, "stride_spread").value_or(kUnset),
+                                 optional_number(p, at, "boundary_spread").value_or(kUnset),
+                                 optional_text(p, at, "flag").value_or("")};
   });
   f.trials = list<FittedTrialRecord>(j, r, "trials", [](const nlohmann::json& t, const std::string& at) {
     return FittedTrialRecord{text(t, at, "source"), integer(t, at, "samples"), number(t, at, "rms"), number(t, at, "max"),
@@ -85,6 +100,11 @@ void from_json(const nlohmann::json& j, FootFitRecord& f) {
   });
   f.foot = member(j, r, "foot");
   if (!f.foot.is_object()) throw RecordError("values.foot: is not a foot spec object");
+  if (j.contains("spread_refits")) {  // records stored before the spreads have none
+    f.spread_refits = integer(j, r, "spread_refits");
+    f.spread_unconverged = integer(j, r, "spread_unconverged");
+    f.boundary_tolerance = number(j, r, "boundary_tolerance");
+  }
 }
 
 void to_json(nlohmann::json& j, const FootFitAnglesRecord& a) { j = {{"theta", a.theta}}; }

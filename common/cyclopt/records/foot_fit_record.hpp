@@ -15,11 +15,16 @@
 namespace cyclopt::records {
 
 // One shape parameter with its box (4.13 / 4.18); NaN standard error: held on a bound or fixed.
+// The spreads over strides and stance boundaries (foot_fit/fit_spread.hpp) are null where not
+// estimated (and absent in records stored before them); `flag` says why the parameter is not
+// well determined, empty when nothing is wrong.
 struct FittedParameterRecord {
   std::string name, unit;
   double value = kUnset, lower = kUnset, upper = kUnset;  // infinite bounds are stored as null
   double standard_error = kUnset;
   bool fixed = false, at_bound = false;
+  double stride_spread = kUnset, boundary_spread = kUnset;
+  std::string flag;
   bool operator==(const FittedParameterRecord&) const = default;
 };
 
@@ -50,6 +55,10 @@ struct FootFitRecord {
   bool convex = false;
   std::vector<ConvexityRowRecord> convexity;
   nlohmann::json foot;  // the fitted foot as foot.schema.json describes it
+  // The refits behind the spreads: counted, of them not converged, boundary tolerance (s);
+  // 0, 0, null where no spread was estimated.
+  int spread_refits = 0, spread_unconverged = 0;
+  double boundary_tolerance = kUnset;
   bool operator==(const FootFitRecord&) const = default;
 };
 
