@@ -131,7 +131,9 @@ class WorkingSetFactorization {
 // of the equality-constrained KKT system of the working set,
 //   H x + g - N u = 0,   n_j' x = -sign_j b_j   (n_j = -sign_j a_j, the working normals),
 // by a full-pivot LU of [H -N; N' 0], restore the rows to rounding. A correction is kept only if it
-// lowers the working rows' residual and leaves every other row within the feasibility tolerance.
+// lowers the working rows' residual, moves x and the multipliers by at most kMaxCorrection relative,
+// and leaves every other row within the feasibility tolerance.
+constexpr double kMaxCorrection = 1e-4;
 void refine_on_working_set(const QuadraticProgram& qp, const Rows& rows, const std::vector<char>& active, double tol,
                            WorkingSetFactorization& ws, VectorXd& x) {
   const Index n = x.size(), q = ws.size();
@@ -151,8 +153,12 @@ void refine_on_working_set(const QuadraticProgram& qp, const Rows& rows, const s
     r.head(n) = -(qp.hessian * x + qp.gradient - N * ws.multipliers());
     r.tail(q) = c - N.transpose() * x;
     const VectorXd delta = lu.solve(r);
+    // A correction of the drift is tiny; a large one comes from a nearly singular KKT matrix.
+    if (!delta.allFinite() || delta.head(n).lpNorm<Eigen::Infinity>() > kMaxCorrection * (1.0 + x.lpNorm<Eigen::Infinity>()) ||
+        delta.tail(q).lpNorm<Eigen::Infinity>() > kMaxCorrection * (1.0 + ws.multipliers().lpNorm<Eigen::Infinity>()))
+      return;
     const VectorXd refined = x + delta.head(n);
-    if (!refined.allFinite() || !(working_residual(refined) < working_residual(x))) return;
+    if (!(working_residual(refined) < working_residual(x))) return;
     const VectorXd slack = rows.b - rows.a * refined;
     for (Index k = 0; k < rows.a.rows(); ++k)
       if (!active[static_cast<size_t>(k)] && rows.origin[static_cast<size_t>(k)].kind != RowKind::equality && slack[k] < -tol)
