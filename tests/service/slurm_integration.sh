@@ -99,7 +99,7 @@ same_points() {  # same_points DB_A JOB_A DB_B JOB_B: equal keys and status, obj
 MULTISTART='{"scene": "walker", "task": "multistart", "foot": "point", "speed": 1.0, "objective": "f_mech", "multistart": {"starts": 4, "seed": 3, "scale": 0.05}}'
 SWEEP='{"scene": "walker", "task": "sweep", "foot": "point", "speeds": "0.8:0.2:1.2", "objective": "f_mech", "multistart": {"starts": 2, "seed": 1, "scale": 0.05}}'
 COMPARISON='{"scene": "walker", "task": "foot_comparison", "speeds": "1.0:0.1:1.1", "points": 50, "feet": ["P1-shoes-left-HM-SG"], "multistart": {"starts": 2, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}'
-DESIGN='{"scene": "walker", "task": "foot_design", "speeds": "2.2:0.1:2.3", "densities": [10], "design_speed": 2.3, "points": 50, "solver": {"max_iterations": 500}, "multistart": {"starts": 2, "seed": 2, "scale": 0.02}, "sweep_starts": 1, "foot_scale": 0, "continuation": {"seed_speeds": 2.3, "min_trust_region": 0.05, "corrector_max_iterations": 60}}'
+DESIGN="$(cat "$(dirname "$0")/data/small_design.json")"  # with a known design: a design on every host
 TINY='{"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "sweep": {"parameter": "density", "values": "10:10:30"}}'
 
 echo "== 1. local executor and Slurm store the same points"

@@ -41,6 +41,7 @@ struct DesignJob {
   int sweep_starts = 20;
   double foot_scale = studies::FootDesignOptions{}.foot_scale;  // design starts' drawn feet
   SweepFields sweeps;
+  std::vector<studies::KnownDesign> known_designs;  // further design starts (studies::KnownDesign)
 };
 
 std::string number_text(double x) {
@@ -58,7 +59,7 @@ std::vector<std::string> foot_parameter_names(foot::FootModel model) {
 DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& common_fields) {
   DesignJob j;
   nlohmann::json walker = spec;
-  for (const char* key : {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation"})
+  for (const char* key : {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation", "known_designs"})
     walker.erase(key);
   if (!walker.contains("foot")) walker["foot"] = kDefaultStartFoot;
   if (!walker.contains("speeds")) walker["speeds"] = kDefaultSpeeds;
@@ -106,6 +107,31 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
   j.sweep_starts = optional_integer(spec, "", "sweep_starts", 1, 1000).value_or(j.sweep_starts);
   j.foot_scale = optional_number(spec, "", "foot_scale", 0.0, 3.0).value_or(j.foot_scale);
   j.sweeps = parse_sweep_fields(spec);
+  if (spec.contains("known_designs")) {
+    const nlohmann::json& k = spec["known_designs"];
+    if (!k.is_array() || k.size() > 100) throw SpecError("known_designs", "must be an array of at most 100 {density, z} objects");
+    const walker::WalkerModel<double> model = j.walker.model();
+    const int gait = walker::gait_parameter_count(model.joint_count, model.constants.bezier_degree);
+    const int n = gait + static_cast<int>(j.walker.problem.free_parameters.size());
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      const std::string field = "known_designs[" + std::to_string(i) + "]";
+      const nlohmann::json& d = object_value(k[i], field);
+      reject_unknown_keys(d, field, {"density", "z"});
+      studies::KnownDesign known;
+      if (!d.contains("density")) throw SpecError(field + ".density", "is required (one of densities)");
+      known.density = number_value(d["density"], field + ".density", foot::kMinDensity, foot::kMaxDensity);
+      if (std::find(j.densities.begin(), j.densities.end(), known.density) == j.densities.end())
+        throw SpecError(field + ".density", "= " + number_text(known.density) + " kg/m^2 is not one of densities");
+      if (!d.contains("z") || !d["z"].is_array() || static_cast<int>(d["z"].size()) != n)
+        throw SpecError(field + ".z", "must be an array of " + std::to_string(n) + " numbers: the " + std::to_string(gait) +
+                                          " gait parameters (rad), then the free foot parameters " +
+                                          join(j.walker.problem.free_parameters));
+      known.z.resize(n);
+      for (int m = 0; m < n; ++m)
+        known.z[m] = number_value(d["z"][static_cast<std::size_t>(m)], field + ".z[" + std::to_string(m) + "]", -100.0, 100.0);
+      j.known_designs.push_back(std::move(known));
+    }
+  }
   return j;
 }
 
@@ -305,6 +331,7 @@ studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   o.bounds = *job_.walker.problem.design_bounds;
   o.free_parameters = job_.walker.problem.free_parameters;
   o.references = job_.references;
+  o.known_designs = job_.known_designs;
   o.constants = job_.walker.constants;
   o.sweep = sweep_options(job_.walker, job_.sweeps, job_.sweep_starts);
   o.journal = [this](const std::string& part) { return sweep_journal(ctx_, part + "/"); };
@@ -462,6 +489,11 @@ nlohmann::json design_job_json(const DesignJob& j) {
   r["sweep_starts"] = j.sweep_starts;
   r["foot_scale"] = j.foot_scale;
   r["continuation"] = sweep_fields_json(j.sweeps);
+  if (!j.known_designs.empty()) {
+    r["known_designs"] = nlohmann::json::array();
+    for (const studies::KnownDesign& k : j.known_designs)
+      r["known_designs"].push_back({{"density", k.density}, {"z", std::vector<double>(k.z.data(), k.z.data() + k.z.size())}});
+  }
   return r;
 }
 
@@ -479,7 +511,7 @@ JobKind foot_design_kind() {
   std::vector<std::string> fields;
   for (const std::string& f : walker_job_fields(true))
     if (f != "start") fields.push_back(f);
-  fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation"});
+  fields.insert(fields.end(), {"densities", "design_speed", "references", "sweep_starts", "foot_scale", "continuation", "known_designs"});
   return with_work_units<DesignJob>(typed_job_kind<DesignJob>("foot_design", {"walker"}, fields, parse_design_job,
                                                               run_design, design_job_json, design_cost),
                                     [](const DesignJob& job, const WorkUnit& unit, JobContext& ctx) {

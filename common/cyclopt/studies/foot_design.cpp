@@ -298,8 +298,6 @@ DensityDesign DesignStudy::at(double rho) {
   const Eigen::VectorXd centre = walker::gait_start(ev, o_.design_speed, {}).x;
   const walker::GaitProblem shape(model, po);
   nlp::MultistartOptions mo;
-  mo.num_starts = o_.starts;
-  mo.base_seed = o_.seed;
   // No Hessian refresh: it stopped tests/service/test_foot_design_jobs' design start (P = 50, seed 2)
   // short of the KKT point W_1 alone reaches in 489 of 500 iterations, and with drawn feet (rho 10,
   // 8 starts, foot_scale 1) no run reached a KKT point with it (1/8 without).
@@ -323,9 +321,22 @@ DensityDesign DesignStudy::at(double rho) {
   journal_multistart(mo, journal, 0);
   if (o_.on_multistart_progress)
     mo.on_progress = [&](int done, double best) { o_.on_multistart_progress(rho, done, best); };
-  const nlp::MultistartResult r = nlp::multistart(
-      [&] { return std::make_unique<walker::GaitProblem>(model, po); },
-      [&](std::mt19937_64& rng) { return design_start(start, po, centre, rng); }, mo);
+  // The drawn starts (start i from base_seed + i, as nlp::multistart draws them), then the known designs.
+  std::vector<Eigen::VectorXd> starts;
+  for (int i = 0; i < o_.starts; ++i) {
+    std::mt19937_64 rng(o_.seed + static_cast<std::uint64_t>(i));
+    starts.push_back(design_start(start, po, centre, rng));
+  }
+  for (const KnownDesign& k : o_.known_designs)
+    if (k.density == rho) {
+      if (k.z.size() != shape.num_variables())
+        throw std::invalid_argument("known_designs: " + std::to_string(k.z.size()) + " values at " + name + ", the design problem has " +
+                                    std::to_string(shape.num_variables()) + " (gait parameters, then " + std::to_string(free_.size()) +
+                                    " foot parameters)");
+      starts.push_back(k.z);
+    }
+  const nlp::MultistartResult r = nlp::multistart_from([&] { return std::make_unique<walker::GaitProblem>(model, po); },
+                                                       std::move(starts), mo);
   d.kkt_starts = r.successes;
   for (const nlp::SolverSummary& run : r.runs)
     d.runs.push_back({run.termination, run.iterations, run.function_evaluations + run.jacobian_evaluations, run.wall_seconds,
@@ -513,6 +524,9 @@ std::vector<std::string> design_free_parameters(const foot::FootSpec& start, con
   if (o.starts < 1) throw std::invalid_argument("starts: must be >= 1");
   if (!(o.foot_scale >= 0.0 && o.foot_scale <= 3.0)) throw std::invalid_argument("foot_scale: must be in [0, 3]");
   if (!(o.resolution_tolerance > 0.0)) throw std::invalid_argument("resolution_tolerance: must be > 0");
+  for (const KnownDesign& k : o.known_designs)
+    if (std::find(o.densities.begin(), o.densities.end(), k.density) == o.densities.end())
+      throw std::invalid_argument("known_designs: density " + std::to_string(k.density) + " kg/m^2 is not one of the densities");
   if (std::none_of(o.sweep.speeds.begin(), o.sweep.speeds.end(), [&](double v) { return std::abs(v - o.design_speed) <= 1e-12; }))
     throw std::invalid_argument("design_speed: must be one of the speeds");
   std::vector<std::string> free = o.free_parameters;

@@ -46,6 +46,15 @@ struct DensityDesign;
 // The phases of one density, in order (FootDesignOptions::on_density).
 enum class DesignPhase { multistart, free_foot, high_sweep, low_sweep };
 
+// A design found before at `density` (z: the design problem's variables - the gait parameters,
+// then the free foot parameters in free_parameters' order): solved as a further start of that
+// density's design multistart, after the drawn ones (e.g. to refine a stored design, or a test
+// that needs a design whatever path the drawn starts take).
+struct KnownDesign {
+  double density = 0.0;
+  Eigen::VectorXd z;
+};
+
 struct FootDesignOptions {
   std::vector<double> densities{10, 20, 30, 40, 50, 60, 70};  // kg/m^2, each > 0
   double design_speed = 2.3;            // m/s, one of sweep.speeds
@@ -65,6 +74,7 @@ struct FootDesignOptions {
   double objective_tolerance = 1e-5;    // distinct design optima (multistart.hpp)
   double x_tolerance = 1e-2;
   bool references = true;               // sweep the start foot and point feet (else savings are NaN)
+  std::vector<KnownDesign> known_designs;  // each density one of densities, z of the design problem's size
   // Grid (speeds), continuation and corrector of steps 2 and 3 and the references; its starts,
   // seed and scale are those of the fixed-foot sweeps. Its on_progress reports each sweep.
   SpeedSweepOptions sweep;
