@@ -17,6 +17,7 @@ std::vector<SensitivityCurve> sensitivity(const walker::WalkerModel<double>& mod
                                           const Eigen::VectorXd& z, const SensitivityOptions& o) {
   if (!(o.relative_range > 0.0 && o.relative_range < 1.0)) throw std::invalid_argument("relative_range: must be in (0, 1)");
   if (o.steps < 1) throw std::invalid_argument("steps: must be >= 1");
+  if (!(o.min_step_fraction > 0.0 && o.min_step_fraction <= 1.0)) throw std::invalid_argument("min_step_fraction: must be in (0, 1]");
   std::vector<std::string> names = o.parameters;
   if (names.empty()) {
     const std::vector<std::string> all = walker::model_parameter_names(model);
@@ -31,11 +32,13 @@ std::vector<SensitivityCurve> sensitivity(const walker::WalkerModel<double>& mod
     c.base_value = p_mod[walker::model_parameter_index(model, name)];
     if (c.base_value == 0.0) throw std::invalid_argument("parameters: " + name + " is 0, a relative change is undefined");
     const ParametricProblem family = walker_family(model, problem, name);
+    ContinuationOptions co = o.continuation;
+    co.min_trust_region = o.min_step_fraction * std::abs(c.base_value) * o.relative_range / o.steps;
     double f0 = 0.0;
     for (const double direction : {-1.0, 1.0}) {
       std::vector<double> grid;
       for (int k = 0; k <= o.steps; ++k) grid.push_back(c.base_value * (1.0 + direction * o.relative_range * k / o.steps));
-      const ContinuationResult r = continue_solution(family, z, grid, o.continuation);
+      const ContinuationResult r = continue_solution(family, z, grid, co);
       c.jumps += static_cast<int>(r.jumps.size());
       if (!r.finished) c.message += (direction < 0 ? "decrease: " : "increase: ") + r.message + "; ";
       if (r.points.empty() || !r.points.front().converged) continue;

@@ -17,6 +17,10 @@ struct SensitivityOptions {
   std::vector<std::string> parameters;  // model parameter names; empty: all foot parameters
   double relative_range = 0.1;          // +-10 %; in (0, 1)
   int steps = 5;                        // requested values per direction; >= 1
+  // Delta_min of Table 7.1 as a fraction of the grid spacing p_0 * relative_range / steps, so
+  // that it is in the parameter's units (Table 7.1: 0.002 m/s on a 0.1 m/s speed grid); in (0, 1].
+  // It replaces continuation.min_trust_region.
+  double min_step_fraction = 0.02;
   ContinuationOptions continuation;
 };
 
