@@ -72,6 +72,29 @@ TEST(FootComparisonFigures, EveryFootTheReferenceAndTheEnvelope) {
     for (const std::string& path : plot::write_figure(f, dir.string())) EXPECT_GT(std::filesystem::file_size(path), 1000u);
 }
 
+TEST(FootComparisonFigures, SeveralSeedsShadeTheEnvelopeUpToTheWorstSeed) {
+  nlohmann::json d = comparison_document();
+  EXPECT_TRUE(plot::foot_comparison_chart(plot::foot_comparison_curves(d)).bands.empty())
+      << "one seed: no band";
+  for (nlohmann::json& s : d["solutions"])
+    if (s["curve"] == 0) s["values"]["seed_spread"] = s["point"] == 0 ? 0.2 : 0.05;
+  const plot::FootComparisonCurves c = plot::foot_comparison_curves(d);
+  EXPECT_EQ(c.envelope_seed_spread, (std::vector<double>{0.2, 0.05}));
+  const plot::LineChart chart = plot::foot_comparison_chart(c);
+  const plot::Series& envelope = chart.series.back();
+  ASSERT_EQ(chart.bands.size(), 1u);
+  const plot::Band& band = chart.bands[0];
+  EXPECT_EQ(band.low, envelope.y);
+  ASSERT_EQ(band.high.size(), 2u);
+  EXPECT_DOUBLE_EQ(band.high[0], 0.015 * 1.2);
+  EXPECT_DOUBLE_EQ(band.high[1], 0.018 * 1.05);
+  EXPECT_NE(envelope.label.find("spread over the seeds"), std::string::npos);
+  EXPECT_GE(chart.y_range->hi, 0.05) << "the axis holds every curve";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cyclopt_foot_comparison_band";
+  for (const plot::Figure& f : plot::foot_comparison_figures(d))
+    for (const std::string& path : plot::write_figure(f, dir.string())) EXPECT_GT(std::filesystem::file_size(path), 1000u);
+}
+
 TEST(FootComparisonFigures, SeventeenCurvesStayApartByColourOrDash) {
   // The default comparison: point feet and the 16 feet of section 9.2. Ten colours repeat, so the
   // feet after the tenth are dashed; no two feet look alike, and none like the reference.

@@ -49,13 +49,15 @@ FootComparisonCurves foot_comparison_curves(const nlohmann::json& doc) {
     throw std::invalid_argument("job " + std::to_string(c.id) + " has no foot summary yet (is it finished?)");
   for (const nlohmann::json& s : doc.value("solutions", nlohmann::json::array())) {
     if (records::is_compared_foot(s.at("values"))) continue;
-    const double f_mech = s["values"].get<records::ComparedSpeedRecord>().f_mech;
+    const auto v = s["values"].get<records::ComparedSpeedRecord>();
+    const double f_mech = v.f_mech;
     if (!std::isfinite(f_mech) || !s.at("parameter").is_number()) continue;
     const int curve = s.value("curve", -1);
     const double speed = s["parameter"].get<double>();
     if (curve == 0) {
       c.envelope_speed.push_back(speed);
       c.envelope_f_mech.push_back(f_mech);
+      c.envelope_seed_spread.push_back(v.seed_spread);
     } else if (const auto it = foot_of_curve.find(curve); it != foot_of_curve.end()) {
       c.feet[it->second].speed.push_back(speed);
       c.feet[it->second].f_mech.push_back(f_mech);
@@ -81,9 +83,23 @@ LineChart foot_comparison_chart(const FootComparisonCurves& c) {
     }
     chart.series.push_back(std::move(s));
   }
-  if (!c.envelope_speed.empty())
-    chart.series.push_back({"best foot per speed (envelope, " + percent(c.envelope_saving) + ")", c.envelope_speed,
-                            c.envelope_f_mech, true, false, Color{0.55, 0.0, 0.0, 1}});
+  if (!c.envelope_speed.empty()) {
+    Series envelope{"best foot per speed (envelope, " + percent(c.envelope_saving) + ")", c.envelope_speed,
+                    c.envelope_f_mech, true, false, Color{0.55, 0.0, 0.0, 1}};
+    // Several seeds: shaded up to the worst seed's own search (f * (1 + spread)).
+    Band band{c.envelope_speed, c.envelope_f_mech, {}, *envelope.color};
+    bool spread = false;
+    for (std::size_t i = 0; i < c.envelope_speed.size(); ++i) {
+      const double w = i < c.envelope_seed_spread.size() ? c.envelope_seed_spread[i] : std::nan("");
+      band.high.push_back(std::isfinite(w) ? c.envelope_f_mech[i] * (1.0 + w) : std::nan(""));
+      spread = spread || std::isfinite(w);
+    }
+    if (spread) {
+      envelope.label += "; shaded: spread over the seeds";
+      chart.bands.push_back(std::move(band));
+    }
+    chart.series.push_back(std::move(envelope));
+  }
   if (chart.series.empty()) throw std::invalid_argument("foot comparison: no foot has a point to draw");
   start_at_zero(chart);
   return chart;

@@ -29,6 +29,9 @@ struct FootComparisonCurves {
   std::int64_t id = 0;
   std::vector<ComparedFootCurve> feet;             // reference first
   std::vector<double> envelope_speed, envelope_f_mech;
+  // Per envelope speed: (max - min) / min of the best foot's f_mech over the seeds' own searches
+  // (NaN: one seed, or a search without a point there).
+  std::vector<double> envelope_seed_spread;
   double envelope_saving = 0.0;
 };
 

@@ -13,8 +13,37 @@ void start_at_zero(LineChart& chart) {
   for (const Series& s : chart.series)
     for (double y : s.y)
       if (std::isfinite(y)) hi = std::max(hi, y);
+  for (const Band& b : chart.bands)
+    for (double y : b.high)
+      if (std::isfinite(y)) hi = std::max(hi, y);
   chart.y_range = Range{0.0, hi > 0 ? 1.08 * hi : 1.0};
 }
+
+namespace {
+
+void draw_band(const Axes& axes, Canvas& canvas, const Band& b) {
+  const Color c{b.color.r, b.color.g, b.color.b, 0.18};
+  std::vector<Point> low, high;
+  auto flush = [&]() {
+    if (low.size() >= 2) {
+      low.insert(low.end(), high.rbegin(), high.rend());
+      canvas.fill_polygon(low, c);
+    }
+    low.clear();
+    high.clear();
+  };
+  for (std::size_t j = 0; j < b.x.size(); ++j) {
+    if (!std::isfinite(b.x[j]) || !std::isfinite(b.low[j]) || !std::isfinite(b.high[j])) {
+      flush();
+      continue;
+    }
+    low.push_back(axes.to_pixel(b.x[j], b.low[j]));
+    high.push_back(axes.to_pixel(b.x[j], b.high[j]));
+  }
+  flush();
+}
+
+}  // namespace
 
 void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
   std::vector<double> xs, ys;
@@ -31,6 +60,16 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
       }
     if (!any) throw std::invalid_argument("series '" + s.label + "' has no finite point");
   }
+  for (const Band& b : chart.bands) {
+    if (b.low.size() != b.x.size() || b.high.size() != b.x.size())
+      throw std::invalid_argument("band: x has " + std::to_string(b.x.size()) + " values, low " +
+                                  std::to_string(b.low.size()) + ", high " + std::to_string(b.high.size()));
+    for (std::size_t i = 0; i < b.x.size(); ++i)
+      if (std::isfinite(b.x[i]) && std::isfinite(b.high[i])) {
+        xs.push_back(b.x[i]);
+        ys.push_back(b.high[i]);
+      }
+  }
   Canvas canvas(path, options.width, options.height);
   canvas.fill_background({1, 1, 1, 1});
   Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(value_range(ys)),
@@ -39,6 +78,7 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   axes.clip_to_plot_area();
   std::vector<Point> occupied;
   std::vector<LegendEntry> legend;
+  for (const Band& b : chart.bands) draw_band(axes, canvas, b);
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     const Series& s = chart.series[i];
     const Color c = s.color.value_or(palette(static_cast<int>(i)));

@@ -18,9 +18,17 @@ struct Series {
   std::optional<Color> color;  // default: palette(index)
 };
 
+// A shaded area between two edges over the same x (e.g. the spread of several searches above
+// their best), drawn beneath every series; non-finite values break it.
+struct Band {
+  std::vector<double> x, low, high;  // same length
+  Color color;                       // drawn translucent
+};
+
 struct LineChart {
   AxesStyle axes;
   std::vector<Series> series;
+  std::vector<Band> bands;
   std::optional<Range> x_range, y_range;  // default: fitted to the data (y: value_range())
 };
 
