@@ -12,9 +12,9 @@
 #include "machine_info.hpp"
 
 #include "cyclopt/plot/foot_comparison_figures.hpp"
-#include "cyclopt/service/foot_comparison_kind.hpp"
+#include "cyclopt/jobs/foot/foot_comparison_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
-#include "cyclopt/service/sweep_checkpoints.hpp"
+#include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
 #include "cyclopt/service/unit_job_context.hpp"
 
 #include <atomic>
@@ -70,9 +70,9 @@ class MemoryJobContext final : public service::JobContext {
   void store_checkpoint(const std::string& key, const std::string& value) override {
     const std::lock_guard<std::mutex> lock(mutex_);
     checkpoints_[key] = value;
-    const std::string suffix = service::kSweptFootCheckpoint;
+    const std::string suffix = jobs::kSweptFootCheckpoint;
     if (key.size() < suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0) return;
-    const studies::FootSweepSummary s = service::foot_sweep_from_json(nlohmann::json::parse(value));
+    const studies::FootSweepSummary s = jobs::foot_sweep_from_json(nlohmann::json::parse(value));
     std::string f_mech;
     for (const double f : s.f_mech) {
       char number[32] = " -";
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
   }
   const std::string out_dir = argv[5];
   service::JobKindRegistry kinds;
-  kinds.add(service::foot_comparison_kind());
+  kinds.add(jobs::foot_comparison_kind());
   const service::ValidatedJobSpec job = service::validate_job_spec(spec, kinds);
   std::printf("foot_comparison_bench: %s; %s at start\nspec: %s\n", bench::machine_line().c_str(),
               bench::load_average().c_str(), spec.dump().c_str());

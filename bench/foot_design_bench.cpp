@@ -15,7 +15,7 @@
 //   of f_mech (W, walker/positive_power.hpp) of every solve
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/service/value_range.hpp"
-#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 #include "cyclopt/studies/foot_design.hpp"
 #include "machine_info.hpp"
 #include "recovery_lines.hpp"
@@ -47,7 +47,7 @@ std::vector<double> list(const std::string& text) {
 // foot_design job of the same speeds solves.
 std::vector<double> grid(const std::string& text) {
   try {
-    return service::parse_value_range(text, "speeds", service::kMinWalkingSpeed, service::kMaxWalkingSpeed);
+    return service::parse_value_range(text, "speeds", jobs::kMinWalkingSpeed, jobs::kMaxWalkingSpeed);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "%s\n", e.what());
     std::exit(1);

@@ -18,7 +18,7 @@
 // SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8).
 #include "bench_foot.hpp"
 #include "cyclopt/service/value_range.hpp"
-#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 #include "machine_info.hpp"
 #include "recovery_lines.hpp"
@@ -116,7 +116,7 @@ int main(int argc_in, char** argv_in) {
   if (argc > 10) po.positive_power_band = std::atof(argv[10]);
   SpeedSweepOptions o;
   // The service's grid (0.3, 0.4, ..., 2.3 as typed), so that this sweep solves what a job solves.
-  o.speeds = service::parse_value_range("0.3:0.1:2.3", "speeds", service::kMinWalkingSpeed, service::kMaxWalkingSpeed);
+  o.speeds = service::parse_value_range("0.3:0.1:2.3", "speeds", jobs::kMinWalkingSpeed, jobs::kMaxWalkingSpeed);
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   o.seeds = seeds;

@@ -17,11 +17,11 @@
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/service/stored_foot_fit.hpp"
-#include "cyclopt/service/stored_start.hpp"
+#include "cyclopt/jobs/foot/stored_foot_fit.hpp"
+#include "cyclopt/jobs/walker/stored_start.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt_channels.hpp"
@@ -469,9 +469,9 @@ void validate_locally(const std::string& spec_json) {
   try {
     // A start naming a stored point and a foot naming a stored fit are resolved by the server,
     // which has the database; with a stored fit the rest of the spec is left to the server too.
-    cyclopt::service::check_stored_foot_fit_references(spec);
-    if (!cyclopt::service::names_stored_foot_fit(spec))
-      cyclopt::service::validate_job_spec(cyclopt::service::without_stored_start(spec), cyclopt::service::builtin_job_kinds());
+    cyclopt::jobs::check_stored_foot_fit_references(spec);
+    if (!cyclopt::jobs::names_stored_foot_fit(spec))
+      cyclopt::service::validate_job_spec(cyclopt::jobs::without_stored_start(spec), cyclopt::jobs::builtin_job_kinds());
   } catch (const cyclopt::SpecError& e) {
     std::string hint;
     if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {

@@ -10,7 +10,7 @@
 #include "cyclopt/cli/exit_codes.hpp"
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "remote/file_job_context.hpp"
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   try {
     spool.write_started(std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
     const server::remote::UnitSpec unit = spool.read_spec();
-    const service::JobKindRegistry kinds = service::builtin_job_kinds();
+    const service::JobKindRegistry kinds = jobs::builtin_job_kinds();
     server::remote::FileJobContext ctx(spool, unit, 2.0);
     server::remote::UnitOutcome outcome;
     try {

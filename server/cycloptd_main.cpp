@@ -2,7 +2,7 @@
 #include "cyclopt/cli/exit_codes.hpp"
 #include "cyclopt/cli/usage_text.hpp"
 #include "cyclopt/cli/version.hpp"
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "server.hpp"
 #include "server_config.hpp"
 
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cycloptd: cannot open LCM at '%s'\n", config.lcm_url.c_str());
     return cli::kExitResource;
   }
-  const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  const service::JobKindRegistry kinds = jobs::builtin_job_kinds();
   try {
     server::Server srv(config, kinds, lcm);
     std::fprintf(stderr, "cycloptd: database %s, %d workers (%s executor), tasks:", config.database.c_str(),

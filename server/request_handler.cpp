@@ -10,8 +10,8 @@
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/service/stored_foot_fit.hpp"
-#include "cyclopt/service/stored_start.hpp"
+#include "cyclopt/jobs/foot/stored_foot_fit.hpp"
+#include "cyclopt/jobs/walker/stored_start.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 
@@ -120,8 +120,8 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
                     key);
     // A foot naming a stored fit becomes the fitted foot and a start naming a stored point that
     // point's x here, once (stored_foot_fit.hpp, stored_start.hpp).
-    const nlohmann::json spec = service::with_stored_start(
-        service::with_stored_foot_fit(service::parse_job_spec_text(msg.spec_json), store_), store_);
+    const nlohmann::json spec = jobs::with_stored_start(
+        jobs::with_stored_foot_fit(service::parse_job_spec_text(msg.spec_json), store_), store_);
     auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec(spec, kinds_));
     const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});

@@ -9,8 +9,8 @@
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/walker_job_results.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
-#include "cyclopt/service/walker_points.hpp"
-#include "cyclopt/service/walker_records.hpp"
+#include "cyclopt/jobs/walker/walker_points.hpp"
+#include "cyclopt/jobs/walker/walker_records.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
@@ -55,7 +55,7 @@ TEST_F(ResultContract, PlotReadsEveryGaitFieldTheWriterStored) {
   so.speed = speed;
   const walker::StartingGait sg = walker::starting_gait(ev, so);
   ASSERT_TRUE(sg.real) << sg.message;
-  const storage::SolutionPoint written = service::point_of(sg.gait, {sg.x, "starting gait"}, {0, 0}, speed);
+  const storage::SolutionPoint written = jobs::point_of(sg.gait, {sg.x, "starting gait"}, {0, 0}, speed);
   const nlohmann::json spec = {{"scene", "walker"}, {"task", "evaluate"}, {"foot", "P2-shoes-left-HMT"}, {"speed", speed}};
   const plot::WalkerJobResults r = plot::walker_job_results(stored_document(spec, {written}));
   ASSERT_EQ(r.points.size(), 1u);
@@ -64,7 +64,7 @@ TEST_F(ResultContract, PlotReadsEveryGaitFieldTheWriterStored) {
   EXPECT_EQ(p.status, "ok");
   EXPECT_TRUE(p.converged);
   // Every member, one by one, so a failure names the field (the records compare whole below).
-  const records::GaitRecord g = service::gait_record(sg.gait);
+  const records::GaitRecord g = jobs::gait_record(sg.gait);
   EXPECT_TRUE(p.gait.real);
   EXPECT_EQ(p.gait.objective, g.objective);
   EXPECT_EQ(p.gait.f_mech, g.f_mech);
@@ -84,7 +84,7 @@ TEST_F(ResultContract, PlotReadsEveryGaitFieldTheWriterStored) {
   EXPECT_EQ(p.gait.f_mech, sg.gait.f_mech);  // and the record holds the walker's own numbers
   EXPECT_EQ(p.gait.floquet_multiplier, sg.gait.floquet);
   ASSERT_TRUE(p.trajectory.has_value());
-  const records::GaitTrajectoryRecord t = *service::trajectory_record(sg.gait.trajectory);
+  const records::GaitTrajectoryRecord t = *jobs::trajectory_record(sg.gait.trajectory);
   EXPECT_EQ(p.trajectory->time, t.time);
   EXPECT_EQ(p.trajectory->theta, t.theta);
   EXPECT_EQ(p.trajectory->q, t.q);

@@ -12,7 +12,7 @@
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
-#include "cyclopt/service/walker_points.hpp"
+#include "cyclopt/jobs/walker/walker_points.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
@@ -92,7 +92,7 @@ StoredJob starting_gaits(const std::string& foot, const std::vector<double>& spe
     so.speed = speeds[i];
     const walker::StartingGait sg = walker::starting_gait(ev, so);
     EXPECT_TRUE(sg.real) << foot << " at " << speeds[i] << " m/s: " << sg.message;
-    job.points.push_back(service::point_of(sg.gait, {sg.x, "starting gait"}, {0, static_cast<int>(i)}, speeds[i]));
+    job.points.push_back(jobs::point_of(sg.gait, {sg.x, "starting gait"}, {0, static_cast<int>(i)}, speeds[i]));
   }
   return job;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A fresh results database in a per-test temporary folder, the built-in job kinds, and a client
 // on an in-process memq:// LCM: what every in-process server test starts from.
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "server.hpp"
 #include "service_client.hpp"
 
@@ -57,7 +57,7 @@ class MemqServerTest : public ::testing::Test {
 
   std::filesystem::path dir_;
   server::ServerConfig config_;
-  service::JobKindRegistry kinds_ = service::builtin_job_kinds();
+  service::JobKindRegistry kinds_ = jobs::builtin_job_kinds();
   lcm::LCM lcm_{"memq://"};
   client::ServiceClient client_{lcm_};
 };

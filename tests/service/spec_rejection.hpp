@@ -12,7 +12,7 @@
 namespace cyclopt::testing {
 
 inline std::optional<SpecError> spec_error(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  static const service::JobKindRegistry kinds = jobs::builtin_job_kinds();
   try {
     service::validate_job_spec(spec, kinds);
   } catch (const SpecError& e) {

@@ -5,10 +5,10 @@
 // bounds.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 #include "spec_rejection.hpp"
 
 #include <gtest/gtest.h>
@@ -17,6 +17,7 @@ namespace cyclopt::service {
 namespace {
 
 using cyclopt::testing::rejection;
+using namespace cyclopt::jobs;
 
 // The seed's section 10.2 problem at one speed: P2 with a density, HM-relevant parameters free.
 nlohmann::json design_spec() {

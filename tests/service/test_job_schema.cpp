@@ -6,7 +6,7 @@
 #include "json_schema_validator.hpp"
 #include "spec_snippets.hpp"
 
-#include "cyclopt/service/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 
@@ -32,7 +32,7 @@ const JsonSchemaValidator& job_schema() {
 }
 
 const service::JobKindRegistry& registry() {
-  static const service::JobKindRegistry r = service::builtin_job_kinds();
+  static const service::JobKindRegistry r = jobs::builtin_job_kinds();
   return r;
 }
 

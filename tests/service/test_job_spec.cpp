@@ -1,11 +1,11 @@
 // Job-spec validation: value ranges, common fields, the foot_sweep kind; every error names its
 // field.
-#include "cyclopt/service/builtin_job_kinds.hpp"
-#include "cyclopt/service/foot_sweep_kind.hpp"
+#include "cyclopt/jobs/builtin_job_kinds.hpp"
+#include "cyclopt/jobs/foot/foot_sweep_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
-#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,8 @@
 
 namespace cyclopt::service {
 namespace {
+
+using namespace cyclopt::jobs;
 
 // The field named by the SpecError `f` throws ("" if it does not throw).
 template <class F>

@@ -10,10 +10,10 @@
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
-#include "cyclopt/service/giant_swing_job_spec.hpp"
+#include "cyclopt/jobs/giant_swing/giant_swing_job_spec.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
-#include "cyclopt/service/stored_start.hpp"
+#include "cyclopt/jobs/walker/stored_start.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 
@@ -65,7 +65,7 @@ TEST_F(ReproducibleJobs, AStoredJobRecordsTheVersionTheSeedsAndTheResolvedSpec) 
 // The resolved spec of `spec`, checked to be a fixed point: validated and resolved again, it is
 // itself (the defaults it spells out are the ones the job ran with).
 nlohmann::json resolved_fixed_point(const nlohmann::json& spec) {
-  static const service::JobKindRegistry kinds = service::builtin_job_kinds();
+  static const service::JobKindRegistry kinds = jobs::builtin_job_kinds();
   const nlohmann::json first = service::resolved_spec(service::validate_job_spec(spec, kinds));
   nlohmann::json again;
   EXPECT_NO_THROW(again = service::resolved_spec(service::validate_job_spec(first, kinds))) << first.dump();
@@ -198,8 +198,8 @@ TEST(ResolvedSpec, AGiantSwingSpellsOutEveryOptionOfItsMethod) {
   EXPECT_EQ(seed["options"]["weights"]["jerk"], 0.01);
   EXPECT_EQ(seed["options"]["optimiser"]["support_points"], 4);
   // The same task, to the last bit.
-  const service::GiantSwingJob submitted = service::parse_giant_swing_job(spec, {});
-  const service::GiantSwingJob resolved = service::parse_giant_swing_job(seed, {});
+  const jobs::GiantSwingJob submitted = jobs::parse_giant_swing_job(spec, {});
+  const jobs::GiantSwingJob resolved = jobs::parse_giant_swing_job(seed, {});
   EXPECT_EQ(resolved.task.omega, submitted.task.omega);
   EXPECT_EQ(resolved.task.initial_rate, submitted.task.initial_rate);
   EXPECT_EQ(resolved.task.ranges.alpha_min, submitted.task.ranges.alpha_min);
@@ -242,7 +242,7 @@ TEST(ResolvedSpec, SeedsAreTheFieldsNamedSeed) {
 
 // Every kind resolves its spec: a kind without resolve is not registered.
 TEST(ResolvedSpec, AKindWithoutAResolverIsRefused) {
-  service::JobKind kind = *service::builtin_job_kinds().find("foot_sweep");
+  service::JobKind kind = *jobs::builtin_job_kinds().find("foot_sweep");
   kind.resolve = {};
   service::JobKindRegistry registry;
   EXPECT_THROW(registry.add(kind), std::logic_error);
@@ -272,7 +272,7 @@ TEST_F(ReproducibleJobs, AnOptimiseStartedFromAStoredOptimumConvergesAtOnce) {
   const storage::JobRecord job = *srv.store().job(2);
   EXPECT_EQ(nlohmann::json::parse(job.spec_json)["start"], again["start"]);  // as submitted
   EXPECT_EQ(nlohmann::json::parse(job.resolved_spec_json)["start"], x);       // what it ran from
-  EXPECT_EQ(service::runnable_spec_text(job), job.resolved_spec_json);  // a resumed job needs no lookup
+  EXPECT_EQ(jobs::runnable_spec_text(job), job.resolved_spec_json);  // a resumed job needs no lookup
 }
 
 class StoredStartReferences : public testing::MemqServerTest {
@@ -294,7 +294,7 @@ class StoredStartReferences : public testing::MemqServerTest {
   // The SpecError of resolving `start` in an optimise spec ("field: message"), or "resolved".
   std::string rejection(const nlohmann::json& start, const std::string& foot = "point") {
     try {
-      service::with_stored_start({{"scene", "walker"}, {"task", "optimise"}, {"foot", foot}, {"speed", 1.0}, {"start", start}},
+      jobs::with_stored_start({{"scene", "walker"}, {"task", "optimise"}, {"foot", foot}, {"speed", 1.0}, {"start", start}},
                                  *store_);
     } catch (const SpecError& e) {
       EXPECT_EQ(std::string(e.what()).rfind(e.field() + ": ", 0), 0u) << e.what();
@@ -309,9 +309,9 @@ class StoredStartReferences : public testing::MemqServerTest {
 TEST_F(StoredStartReferences, AReferenceBecomesThePointsGaitParameters) {
   const nlohmann::json spec = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.2},
                                {"start", {{"job", 1}, {"curve", 0}, {"point", 0}}}};
-  EXPECT_EQ(service::with_stored_start(spec, *store_)["start"], std::vector<double>(20, 0.1));
+  EXPECT_EQ(jobs::with_stored_start(spec, *store_)["start"], std::vector<double>(20, 0.1));
   const nlohmann::json plain = {{"scene", "walker"}, {"task", "optimise"}, {"start", {1, 2}}};
-  EXPECT_EQ(service::with_stored_start(plain, *store_), plain);  // an x list is left to the walker fields
+  EXPECT_EQ(jobs::with_stored_start(plain, *store_), plain);  // an x list is left to the walker fields
 }
 
 TEST_F(StoredStartReferences, BadReferencesAreRejectedNamingTheField) {
@@ -337,8 +337,8 @@ TEST_F(StoredStartReferences, BadReferencesAreRejectedNamingTheField) {
   const std::string other_foot = rejection({{"job", 1}, {"point", 0}}, "P1-barefoot-left-HM");
   EXPECT_TRUE(starts_with(other_foot, "start.job: job 1 is for the foot model point, this job's foot is HM")) << other_foot;
   // The client, without the database, checks the reference's form and the rest of the spec.
-  EXPECT_THROW(service::without_stored_start({{"start", {{"job", "seven"}, {"point", 0}}}}), SpecError);
-  EXPECT_FALSE(service::without_stored_start({{"start", {{"job", 7}, {"point", 0}}}}).contains("start"));
+  EXPECT_THROW(jobs::without_stored_start({{"start", {{"job", "seven"}, {"point", 0}}}}), SpecError);
+  EXPECT_FALSE(jobs::without_stored_start({{"start", {{"job", 7}, {"point", 0}}}}).contains("start"));
 }
 
 }  // namespace

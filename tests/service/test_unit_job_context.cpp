@@ -6,7 +6,7 @@
 // feet already swept, whichever unit swept them.
 #include "cyclopt/service/unit_job_context.hpp"
 
-#include "cyclopt/service/foot_comparison_kind.hpp"
+#include "cyclopt/jobs/foot/foot_comparison_kind.hpp"
 #include "cyclopt/service/job_spec.hpp"
 
 #include <gtest/gtest.h>
@@ -21,6 +21,8 @@
 
 namespace cyclopt::service {
 namespace {
+
+using namespace cyclopt::jobs;
 
 // A job context in memory: what the units did to their job.
 class MemoryJob final : public JobContext {

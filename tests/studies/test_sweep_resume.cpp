@@ -4,7 +4,7 @@
 // here is a map of the same JSON texts the service stores (service/sweep_checkpoints.hpp), so the
 // round trip through the stored form is part of what is checked.
 #include "cyclopt/foot/foot_presets.hpp"
-#include "cyclopt/service/sweep_checkpoints.hpp"
+#include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -31,20 +31,20 @@ struct MemoryJournal {
       const std::lock_guard lock(mutex);
       const auto it = texts.find("solve/" + std::to_string(b) + "/" + std::to_string(s));
       if (it == texts.end()) return std::nullopt;
-      return service::summary_from_json(nlohmann::json::parse(it->second));
+      return jobs::summary_from_json(nlohmann::json::parse(it->second));
     };
     j.record_solve = [this](int b, int s, const nlp::SolverSummary& run) {
       const std::lock_guard lock(mutex);
-      texts["solve/" + std::to_string(b) + "/" + std::to_string(s)] = service::summary_to_json(run).dump();
+      texts["solve/" + std::to_string(b) + "/" + std::to_string(s)] = jobs::summary_to_json(run).dump();
       ++recorded;
     };
     j.find_run = [this](int n) -> std::optional<continuation::ContinuationResult> {
       const auto it = texts.find("run/" + std::to_string(n));
       if (it == texts.end()) return std::nullopt;
-      return service::run_from_json(nlohmann::json::parse(it->second));
+      return jobs::run_from_json(nlohmann::json::parse(it->second));
     };
     j.record_run = [this](int n, const continuation::ContinuationResult& r) {
-      texts["run/" + std::to_string(n)] = service::run_to_json(r).dump();
+      texts["run/" + std::to_string(n)] = jobs::run_to_json(r).dump();
       ++recorded;
     };
     return j;
@@ -126,7 +126,7 @@ TEST(SweepResume, CheckpointTextsRoundTripEveryField) {
   s.kkt_error = std::nan("");
   s.x = Eigen::VectorXd::LinSpaced(5, -1.0 / 3.0, 2.0 / 7.0);
   s.bound_multipliers = Eigen::VectorXd::Constant(2, 1e-300);
-  const nlp::SolverSummary back = service::summary_from_json(nlohmann::json::parse(service::summary_to_json(s).dump()));
+  const nlp::SolverSummary back = jobs::summary_from_json(nlohmann::json::parse(jobs::summary_to_json(s).dump()));
   EXPECT_EQ(back.termination, s.termination);
   EXPECT_EQ(back.message, s.message);
   EXPECT_EQ(back.iterations, s.iterations);
@@ -135,7 +135,7 @@ TEST(SweepResume, CheckpointTextsRoundTripEveryField) {
   EXPECT_EQ(back.x, s.x);
   EXPECT_EQ(back.bound_multipliers, s.bound_multipliers);
   EXPECT_EQ(back.equality_multipliers.size(), 0);
-  nlohmann::json bad = service::summary_to_json(s);
+  nlohmann::json bad = jobs::summary_to_json(s);
   bad["termination"] = 99;
-  EXPECT_THROW(service::summary_from_json(bad), nlohmann::json::exception);
+  EXPECT_THROW(jobs::summary_from_json(bad), nlohmann::json::exception);
 }

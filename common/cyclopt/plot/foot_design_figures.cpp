@@ -49,7 +49,7 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
   const bool resolved = doc.contains("resolved_spec") && doc["resolved_spec"].is_object() &&
                         doc["resolved_spec"].value("resolved", true);
   c.spec = resolved ? doc["resolved_spec"] : doc["spec"];
-  c.setup = service::foot_design_setup(c.spec);
+  c.setup = jobs::foot_design_setup(c.spec);
   c.start = c.setup.walker.foot;
   c.start_foot.name = "start foot " + c.start.name;
   c.point_feet.name = "point feet";

@@ -12,7 +12,7 @@
 #include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/service/foot_design_kind.hpp"
+#include "cyclopt/jobs/foot/foot_design_kind.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -48,7 +48,7 @@ struct FootDesignCurves {
   int best = -1;          // index into densities: the admissible one whose answer saves most vs the start foot
   std::vector<GaitPoint> best_gaits;  // the fixed-foot sweep of the best density's answer (when best >= 0)
   nlohmann::json spec;    // as stored (the resolved spec where the job has one)
-  service::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
+  jobs::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
 };
 
 // Throws std::invalid_argument when the document is not a foot_design job or has no density

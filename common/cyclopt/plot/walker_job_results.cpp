@@ -16,7 +16,7 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
     throw std::invalid_argument("job " + std::to_string(r.id) + " is a " + scene + " " + task +
                                 " job; pictures of gaits need a walker evaluate, optimise, multistart or sweep job");
   r.spec = doc["spec"];
-  r.job = service::parse_walker_job(r.spec, task == "sweep");
+  r.job = jobs::parse_walker_job(r.spec, task == "sweep");
   const std::string foot = r.job.foot.name.empty() ? std::string(foot::to_string(r.job.foot.model)) : r.job.foot.name;
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));

@@ -6,7 +6,7 @@
 
 #include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/records/sensitivity_records.hpp"
-#include "cyclopt/service/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -30,7 +30,7 @@ struct WalkerJobResults {
   std::int64_t id = 0;
   std::string label;  // for legends: the spec's name, else "job N: foot, objective"
   nlohmann::json spec;
-  service::WalkerJob job;  // parsed spec: foot, model constants, objective
+  jobs::WalkerJob job;  // parsed spec: foot, model constants, objective
   std::vector<GaitPoint> points;  // curve 0, in point order
 };
 
