@@ -20,8 +20,7 @@
 #include "cyclopt/jobs/builtin_job_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/jobs/foot/stored_foot_fit.hpp"
-#include "cyclopt/jobs/walker/stored_start.hpp"
+#include "cyclopt/service/stored_references.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt_channels.hpp"
@@ -469,9 +468,8 @@ void validate_locally(const std::string& spec_json) {
   try {
     // A start naming a stored point and a foot naming a stored fit are resolved by the server,
     // which has the database; with a stored fit the rest of the spec is left to the server too.
-    cyclopt::jobs::check_stored_foot_fit_references(spec);
-    if (!cyclopt::jobs::names_stored_foot_fit(spec))
-      cyclopt::service::validate_job_spec(cyclopt::jobs::without_stored_start(spec), cyclopt::jobs::builtin_job_kinds());
+    if (cyclopt::service::stored_fit_references(spec).empty())
+      cyclopt::service::validate_job_spec(cyclopt::service::without_stored_start(spec), cyclopt::jobs::builtin_job_kinds());
   } catch (const cyclopt::SpecError& e) {
     std::string hint;
     if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {

@@ -4,7 +4,7 @@
 
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
-#include "cyclopt/jobs/walker/stored_start.hpp"
+#include "cyclopt/service/stored_references.hpp"
 #include "cyclopt_channels.hpp"
 #include "worker_job_context.hpp"
 
@@ -20,7 +20,7 @@ std::shared_ptr<const service::ValidatedJobSpec> parse_stored_spec(const storage
                                                                    const service::JobKindRegistry& kinds,
                                                                    std::string& error) {
   try {
-    return std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(jobs::runnable_spec_text(job), kinds));
+    return std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec_text(service::runnable_spec_text(job), kinds));
   } catch (const SpecError& e) {
     error = "spec_json: the stored spec of job " + std::to_string(job.id) + " is not valid on this server (" + e.what() +
             ")";

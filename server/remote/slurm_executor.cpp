@@ -3,7 +3,7 @@
 #include "command.hpp"
 #include "unit_spool.hpp"
 
-#include "cyclopt/jobs/walker/stored_start.hpp"
+#include "cyclopt/service/stored_references.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -193,7 +193,7 @@ class Unit {
     UnitSpec spec;
     spec.job_id = job_.id;
     spec.task = job_.task;
-    spec.spec_json = jobs::runnable_spec_text(job_);  // the worker has no database to resolve a stored start
+    spec.spec_json = service::runnable_spec_text(job_);  // the worker has no database to resolve a stored start
     spec.limits = ctx_.limits();
     spec.run_seconds_before = job_.run_seconds;
     spec.submitted_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();

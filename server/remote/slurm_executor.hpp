@@ -24,7 +24,7 @@ namespace cyclopt::server::remote {
 class SlurmExecutor final : public JobExecutor {
  public:
   explicit SlurmExecutor(SlurmOptions options);
-  // Runs the job's stored spec text (jobs::runnable_spec_text) in cyclopt-worker, which parses it itself.
+  // Runs the job's stored spec text (service::runnable_spec_text) in cyclopt-worker, which parses it itself.
   // A kind with work units runs here instead, and its units come to run_units.
   void run(const storage::JobRecord& job, const service::ValidatedJobSpec& spec, service::JobContext& ctx) const override;
   // Every unit as its own Slurm job (SPOOL/cyclopt-<job id>-<hash>-<unit id>), all submitted at

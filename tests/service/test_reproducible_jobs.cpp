@@ -14,6 +14,7 @@
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 #include "cyclopt/jobs/walker/stored_start.hpp"
+#include "cyclopt/service/stored_references.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 
@@ -272,7 +273,7 @@ TEST_F(ReproducibleJobs, AnOptimiseStartedFromAStoredOptimumConvergesAtOnce) {
   const storage::JobRecord job = *srv.store().job(2);
   EXPECT_EQ(nlohmann::json::parse(job.spec_json)["start"], again["start"]);  // as submitted
   EXPECT_EQ(nlohmann::json::parse(job.resolved_spec_json)["start"], x);       // what it ran from
-  EXPECT_EQ(jobs::runnable_spec_text(job), job.resolved_spec_json);  // a resumed job needs no lookup
+  EXPECT_EQ(service::runnable_spec_text(job), job.resolved_spec_json);  // a resumed job needs no lookup
 }
 
 class StoredStartReferences : public testing::MemqServerTest {
@@ -337,8 +338,8 @@ TEST_F(StoredStartReferences, BadReferencesAreRejectedNamingTheField) {
   const std::string other_foot = rejection({{"job", 1}, {"point", 0}}, "P1-barefoot-left-HM");
   EXPECT_TRUE(starts_with(other_foot, "start.job: job 1 is for the foot model point, this job's foot is HM")) << other_foot;
   // The client, without the database, checks the reference's form and the rest of the spec.
-  EXPECT_THROW(jobs::without_stored_start({{"start", {{"job", "seven"}, {"point", 0}}}}), SpecError);
-  EXPECT_FALSE(jobs::without_stored_start({{"start", {{"job", 7}, {"point", 0}}}}).contains("start"));
+  EXPECT_THROW(service::without_stored_start({{"start", {{"job", "seven"}, {"point", 0}}}}), SpecError);
+  EXPECT_FALSE(service::without_stored_start({{"start", {{"job", 7}, {"point", 0}}}}).contains("start"));
 }
 
 }  // namespace

@@ -20,9 +20,7 @@ SolverOverrides parse_solver(const nlohmann::json& spec) {
   if (!spec.contains("solver")) return o;
   const nlohmann::json& s = object_value(spec["solver"], "solver");
   reject_unknown_keys(s, "solver", kSolverFields);
-  if (s.contains("solver"))
-    o.solver = enum_value(s["solver"], "solver.solver", {"ipopt", "sqp"}) == "sqp" ? nlp::SolverKind::sqp
-                                                                                   : nlp::SolverKind::ipopt;
+  if (s.contains("solver")) o.solver = enum_value(s["solver"], "solver.solver", {"ipopt", "sqp"});
   o.max_iterations = optional_integer(s, "solver", "max_iterations", 1, 100000);
   o.optimality_tolerance = optional_number(s, "solver", "optimality_tolerance", 1e-14, 1.0);
   o.constraint_tolerance = optional_number(s, "solver", "constraint_tolerance", 1e-14, 1.0);
@@ -44,24 +42,6 @@ RequestedLimits parse_limits(const nlohmann::json& spec) {
 
 }  // namespace
 
-nlp::SolverOptions SolverOverrides::applied_to(const nlp::SolverOptions& base) const {
-  nlp::SolverOptions o = base;
-  o.solver = solver.value_or(o.solver);
-  o.max_iterations = max_iterations.value_or(o.max_iterations);
-  o.optimality_tolerance = optimality_tolerance.value_or(o.optimality_tolerance);
-  o.constraint_tolerance = constraint_tolerance.value_or(o.constraint_tolerance);
-  o.print_level = print_level.value_or(o.print_level);
-  return o;
-}
-
-nlohmann::json solver_json(const nlp::SolverOptions& options) {
-  return {{"solver", nlp::to_string(options.solver)},
-          {"max_iterations", options.max_iterations},
-          {"optimality_tolerance", options.optimality_tolerance},
-          {"constraint_tolerance", options.constraint_tolerance},
-          {"print_level", options.print_level}};
-}
-
 const std::vector<std::string>& common_job_field_names() {
   static const std::vector<std::string> v = {"scene", "task", "name", "objective", "solver", "limits"};
   return v;
@@ -70,10 +50,7 @@ const std::vector<std::string>& common_job_field_names() {
 CommonJobFields parse_common_job_fields(const nlohmann::json& spec) {
   CommonJobFields c;
   if (spec.contains("name")) c.name = string_value(spec["name"], "name", 200);
-  if (spec.contains("objective"))
-    c.objective = enum_value(spec["objective"], "objective", known_objectives()) == "f_usq"
-                      ? walker::Objective::squared_torque
-                      : walker::Objective::mechanical;
+  if (spec.contains("objective")) c.objective = enum_value(spec["objective"], "objective", known_objectives());
   c.solver = parse_solver(spec);
   c.limits = parse_limits(spec);
   return c;

@@ -9,10 +9,10 @@
 //              constraint_tolerance in [1e-14, 1], print_level 0..12}: overrides of the kind's
 //              default solver options
 //   limits     {max_wall_seconds in (0, 604800], max_iterations 1..1e9}, each capped by the server's
+// They stay plain values here, as the spec names them; the kinds turn them into their solver's
+// options and their scene's objective (jobs/solver_fields.hpp).
 
-#include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/service/job_context.hpp"
-#include "cyclopt/walker/periodic_gait.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -24,18 +24,12 @@ namespace cyclopt::service {
 
 // The spec's "solver" block: what it sets, on top of a kind's defaults.
 struct SolverOverrides {
-  std::optional<nlp::SolverKind> solver;
+  std::optional<std::string> solver;  // "ipopt" | "sqp"
   std::optional<int> max_iterations;
   std::optional<double> optimality_tolerance;
   std::optional<double> constraint_tolerance;
   std::optional<int> print_level;
-
-  nlp::SolverOptions applied_to(const nlp::SolverOptions& base) const;
 };
-
-// The "solver" block that sets every one of the fields above to `options`' (for a resolved spec,
-// resolved_spec.hpp): applied to any base, it gives `options` in those fields.
-nlohmann::json solver_json(const nlp::SolverOptions& options);
 
 // The spec's "limits": what the submitter asked for, before the server's caps.
 struct RequestedLimits {
@@ -45,7 +39,7 @@ struct RequestedLimits {
 
 struct CommonJobFields {
   std::string name;                            // "" when not given
-  std::optional<walker::Objective> objective;  // nullopt: the kind's default
+  std::optional<std::string> objective;        // "f_mech" | "f_usq"; nullopt: the kind's default
   SolverOverrides solver;
   RequestedLimits limits;
 };

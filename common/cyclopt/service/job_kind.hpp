@@ -19,7 +19,7 @@
 //   SweepJob parse_sweep(const nlohmann::json& spec, const CommonJobFields& common) {
 //     if (!spec.contains("speeds")) throw SpecError("speeds", "is required (m/s, \"lo:step:hi\")");
 //     return {parse_value_range(spec["speeds"], "speeds", 0.05, 5.0),  // throws SpecError naming the field
-//             common.solver.applied_to(nlp::seed_table_6_2_options())};
+//             solver_options(common.solver, nlp::seed_table_6_2_options())};  // jobs/solver_fields.hpp
 //   }
 //
 //   nlohmann::json resolve_sweep(const SweepJob& job) {   // every default filled in

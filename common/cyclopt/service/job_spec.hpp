@@ -11,6 +11,7 @@
 // continuation | sweep | foot_sweep | foot_comparison | foot_design | foot_fit | giant_swing), and
 // name, objective, solver, limits (common_job_fields.hpp).
 
+#include "cyclopt/errors/spec_error.hpp"
 #include "cyclopt/service/job_kind.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,13 +1,9 @@
 #pragma once
 // A walker job's foot may name the fit a foot_fit job stored (foot_fit_kind.hpp, issue 20 item 3)
-// instead of giving a preset or the foot's parameters:
-//
-//   "foot": {"fit": {"job": 7}}                   job 7's HMT fit (point 1)
-//   "foot": {"fit": {"job": 7, "model": "HM"}}    its HM fit (point 0)
-//
-// and so may each of a foot_comparison's "feet" and its "reference". The server replaces the
+// instead of giving a preset or the foot's parameters, and so may each of a foot_comparison's
+// "feet" and its "reference" (the reference's form: service/stored_references.hpp). The server replaces the
 // reference by the fitted foot spec (records::FootFitRecord::foot, named "fitted HMT (job 7)")
-// when the job is submitted, as it does for a stored "start" (stored_start.hpp); the job stores
+// when the job is submitted, as it does for a stored "start" (walker/stored_start.hpp); the job stores
 // the spec as submitted and its resolved spec with the foot's parameters. A reference to a job
 // that does not exist, is not a foot_fit job, has not finished, or whose fit of that model is
 // missing or did not converge is rejected naming foot.fit.job or foot.fit.model.
@@ -18,14 +14,7 @@
 
 namespace cyclopt::jobs {
 
-// Whether any foot of `spec` names a stored fit.
-bool names_stored_foot_fit(const nlohmann::json& spec);
-
 // `spec` with every stored-fit foot replaced by the fitted foot spec. Throws SpecError.
 nlohmann::json with_stored_foot_fit(nlohmann::json spec, storage::ResultStore& store);
-
-// Checks the form of every stored-fit reference of `spec` (throws SpecError): what a client
-// without the database can check of it.
-void check_stored_foot_fit_references(const nlohmann::json& spec);
 
 }  // namespace cyclopt::jobs

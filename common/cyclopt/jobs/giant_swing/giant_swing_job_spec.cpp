@@ -1,6 +1,7 @@
 #include "cyclopt/jobs/giant_swing/giant_swing_job_spec.hpp"
 
 #include "cyclopt/io/task_spec_json.hpp"
+#include "cyclopt/jobs/solver_fields.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 
 #include <algorithm>
@@ -61,7 +62,7 @@ GiantSwingJob parse_giant_swing_job(const nlohmann::json& spec, const CommonJobF
     p.free_coefficients = *n;
   if (auto n = optional_integer(options, "options", "steps", 10, 2000)) p.steps = *n;
   if (auto f = optional_number(options, "options", "min_rate_fraction", 0.0, 0.9)) p.min_rate_fraction = *f;
-  job.bezier.solver = common.solver.applied_to(giant_swing::minimum_jerk_solver_options());
+  job.bezier.solver = solver_options(common.solver, giant_swing::minimum_jerk_solver_options());
   return job;
 }
 

@@ -1,6 +1,7 @@
 #include "cyclopt/jobs/walker/walker_job_json.hpp"
 
 #include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/jobs/solver_fields.hpp"
 
 namespace cyclopt::jobs {
 

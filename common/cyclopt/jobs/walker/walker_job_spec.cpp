@@ -2,6 +2,7 @@
 
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/jobs/solver_fields.hpp"
 #include "cyclopt/jobs/walker/design_bounds_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -44,13 +45,14 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
                      : std::vector<double>{number_value(spec[speed_key], speed_key, kMinWalkingSpeed, kMaxWalkingSpeed)};
   job.constants.points = optional_integer(spec, "", "points", kMinGaitPoints, kMaxGaitPoints).value_or(job.constants.points);
   job.constants.bezier_degree = optional_integer(spec, "", "bezier_degree", 3, 10).value_or(job.constants.bezier_degree);
-  job.problem.objective = common.objective.value_or(job.problem.objective);
+  if (common.objective)
+    job.problem.objective = *common.objective == "f_usq" ? walker::Objective::squared_torque : walker::Objective::mechanical;
   if (spec.contains("quadrature"))
     job.problem.quadrature = enum_value(spec["quadrature"], "quadrature", {"trapezoid", "corrected_trapezoid"}) ==
                                      "trapezoid"
                                  ? walker::Quadrature::trapezoid
                                  : walker::Quadrature::corrected_trapezoid;
-  job.solver = common.solver.applied_to(nlp::seed_table_6_2_options());  // the seed's SQP by default
+  job.solver = solver_options(common.solver, nlp::seed_table_6_2_options());  // the seed's SQP by default
   const bool trapezoid = job.problem.quadrature == walker::Quadrature::trapezoid;
   const bool ipopt = job.solver.solver == nlp::SolverKind::ipopt;
   job.problem.positive_power_band = optional_number(spec, "", "positive_power_band", 0.0, walker::kMaxPositivePowerBand)
