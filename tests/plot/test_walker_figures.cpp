@@ -131,8 +131,8 @@ StoredJob* WalkerFigures::hmt_ = nullptr;
 
 TEST_F(WalkerFigures, PoseHasTheModelsSegmentLengthsAndTheFootRollsOnTheGround) {
   const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
-  const walker::WalkerModel<double> m = r.job.model();
-  const std::vector<Xz> outline = foot_outline(r.job.foot);
+  const walker::WalkerModel<double> m = r.walker.model();
+  const std::vector<Xz> outline = foot_outline(r.walker.foot);
   const std::vector<std::vector<double>>& q = r.points[0].trajectory->q;
   auto dist = [](const Xz& a, const Xz& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); };
   for (std::size_t i = 0; i < q[0].size(); i += 40) {

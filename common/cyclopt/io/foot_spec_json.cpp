@@ -1,5 +1,7 @@
 #include "cyclopt/io/foot_spec_json.hpp"
 
+#include "cyclopt/foot/foot_presets.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -88,6 +90,16 @@ nlohmann::json to_json(const FootSpec& spec) {
   if (spec.theta_F0) j["theta_F0"] = *spec.theta_F0;
   if (!spec.name.empty()) j["name"] = spec.name;
   return j;
+}
+
+FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
+  if (v.is_string()) try {
+      return foot::foot_preset(v.get<std::string>()).spec;
+    } catch (const SpecError& e) {
+      throw SpecError(path, e.what());
+    }
+  if (!v.is_object()) throw SpecError(path, "must be a JSON object, got " + v.dump().substr(0, 80));
+  return foot_spec_from_json(v, path);
 }
 
 }  // namespace cyclopt::io

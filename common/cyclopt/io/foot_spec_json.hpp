@@ -20,6 +20,8 @@ namespace cyclopt::io {
 
 // Parses and validates (foot::validate); `path` prefixes field names in SpecError messages.
 foot::FootSpec foot_spec_from_json(const nlohmann::json& j, const std::string& path = "foot");
+// A foot as a job spec gives it: a preset name (foot/foot_presets.hpp) or a foot spec object.
+foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path = "foot");
 nlohmann::json to_json(const foot::FootSpec& spec);
 
 }  // namespace cyclopt::io

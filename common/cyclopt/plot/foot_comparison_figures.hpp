@@ -1,5 +1,5 @@
 #pragma once
-// Figures of a foot_comparison job (service/foot_comparison_kind.hpp; seed 001 section 9.2):
+// Figures of a foot_comparison job (jobs/foot/foot_comparison_kind.cpp; seed 001 section 9.2):
 //   foot-comparison  f_mech (eq. 5.102) over speed for every foot in one chart, the reference
 //                    (point feet) dashed black and the best-foot envelope thick (Fig. 9.14/9.19a)
 //   foot-outlines    the outlines of the compared feet side by side, on one scale (Fig. 9.8,

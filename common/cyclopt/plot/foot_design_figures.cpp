@@ -46,11 +46,11 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
   if (doc.value("task", "") != "foot_design" || !doc.contains("spec"))
     throw std::invalid_argument("job " + std::to_string(c.id) + " is a " + doc.value("task", std::string("?")) +
                                 " job; the foot design figures need a foot_design job");
-  const bool resolved = doc.contains("resolved_spec") && doc["resolved_spec"].is_object() &&
-                        doc["resolved_spec"].value("resolved", true);
-  c.spec = resolved ? doc["resolved_spec"] : doc["spec"];
-  c.setup = jobs::foot_design_setup(c.spec);
-  c.start = c.setup.walker.foot;
+  c.spec = stored_spec(doc);
+  c.walker = stored_walker(c.spec);
+  if (!c.walker.setup.design_speed) throw records::RecordError("spec.design_speed: is missing");
+  c.design_speed = *c.walker.setup.design_speed;
+  c.start = c.walker.foot;
   c.start_foot.name = "start foot " + c.start.name;
   c.point_feet.name = "point feet";
   const nlohmann::json none = nlohmann::json::array();
@@ -179,10 +179,10 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
   r.id = c.id;
   r.label = best.answer_sweep().name;
   r.spec = c.spec;
-  r.job = c.setup.walker;
-  r.job.foot = best.answer();
+  r.walker = c.walker;
+  r.walker.foot = best.answer();
   r.points = c.best_gaits;
-  const GaitPoint* p = point_near(r, c.setup.design_speed);
+  const GaitPoint* p = point_near(r, c.design_speed);
   if (!p) {
     skip("foot-design-gait: the " + r.label + "'s sweep has no converged gait with a trajectory");
     return out;

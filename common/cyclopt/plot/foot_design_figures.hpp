@@ -1,5 +1,5 @@
 #pragma once
-// Figures of a foot_design job (service/foot_design_kind.hpp; seed 001 section 10.2), read from
+// Figures of a foot_design job (jobs/foot/foot_design_kind.cpp; seed 001 section 10.2), read from
 // the job document `cyclopt export` writes through records/foot_design_records.hpp:
 //   foot-design-outlines  the design of every density with an admissible one (solid) and its
 //                         low-speed design (dashed), over the start foot, ankles at one point
@@ -12,7 +12,6 @@
 #include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/jobs/foot/foot_design_kind.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -48,7 +47,8 @@ struct FootDesignCurves {
   int best = -1;          // index into densities: the admissible one whose answer saves most vs the start foot
   std::vector<GaitPoint> best_gaits;  // the fixed-foot sweep of the best density's answer (when best >= 0)
   nlohmann::json spec;    // as stored (the resolved spec where the job has one)
-  jobs::FootDesignSetup setup;  // parsed from it: walker constants, start foot, design speed
+  StoredWalker walker;    // its setup record: the start foot, the walker constants
+  double design_speed = 0.0;
 };
 
 // Throws std::invalid_argument when the document is not a foot_design job or has no density

@@ -57,7 +57,7 @@ ReportTable design_table(const FootDesignCurves& c) {
       const records::DesignedFoot& f = low ? r.low_speed_design : r.design;
       std::vector<std::string> row{report_number(r.density, "%g"),
                                    std::string(low ? "low-speed design (" : "design (") +
-                                       report_number(low ? r.low_speed : c.setup.design_speed, "%.2f") + " m/s)" +
+                                       report_number(low ? r.low_speed : c.design_speed, "%.2f") + " m/s)" +
                                        (low == d.low_is_answer() ? ", answer" : "")};
       for (const foot::ParameterInfo& p : layout) {
         const auto it = f.parameters.find(std::string(p.name));

@@ -31,7 +31,7 @@ Scene fitted_outline_scene(const foot_fit::FootFitResult& fit);
 // Both, as figures with stems fit_hm_ankle, fit_hm_outline (fit_hmt_... for HMT).
 std::vector<Figure> fit_figures(const std::vector<foot_fit::AnkleTrack>& tracks, const foot_fit::FootFitResult& fit);
 
-// The figures of a stored foot_fit job (service/foot_fit_kind.hpp) from the document `cyclopt
+// The figures of a stored foot_fit job (jobs/foot/foot_fit_kind.cpp) from the document `cyclopt
 // export` writes: the trials from its spec, each converged fit from its record and angles. A fit
 // that did not converge is not drawn; with `not_drawn` it is listed there with its reason.
 // Throws std::invalid_argument when the document is not a foot_fit job or holds no fit yet.

@@ -85,8 +85,8 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
   if (!point.trajectory || point.trajectory->time.size() < 2)
     throw std::invalid_argument("gait animation: the point at " + std::to_string(point.speed) +
                                 " m/s has no stored trajectory of >= 2 samples");
-  const walker::WalkerModel<double> model = job.job.model();
-  const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.job.foot) : std::vector<Xz>{};
+  const walker::WalkerModel<double> model = job.walker.model();
+  const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.walker.foot) : std::vector<Xz>{};
   const records::GaitTrajectoryRecord& tr = *point.trajectory;
   const double period = tr.time.back(), step = point.gait.step_length, dt = period / frames_per_step;
   // Two steps, so both legs stand and swing once; the last pose ends where the loop starts again.

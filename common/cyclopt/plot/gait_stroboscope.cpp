@@ -51,8 +51,8 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
     throw std::invalid_argument("gait stroboscope: steps (" + std::to_string(o.steps) + ") and frames_per_step (" +
                                 std::to_string(o.frames_per_step) + ") must be >= 1");
   if (!point.trajectory) throw std::invalid_argument("gait stroboscope: the point has no stored trajectory");
-  const walker::WalkerModel<double> model = job.job.model();
-  const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.job.foot) : std::vector<Xz>{};
+  const walker::WalkerModel<double> model = job.walker.model();
+  const std::vector<Xz> outline = model.has_feet() ? foot_outline(job.walker.foot) : std::vector<Xz>{};
   const records::GaitTrajectoryRecord& tr = *point.trajectory;
   if (tr.time.size() < 2 || tr.swing_contact.size() != 2)
     throw std::invalid_argument("gait stroboscope: the stored trajectory has " + std::to_string(tr.time.size()) +

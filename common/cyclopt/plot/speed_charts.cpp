@@ -85,7 +85,7 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
                 "max |u| over the step (N m)", true};
   std::vector<std::string> omitted;  // statuses of the points not drawn, once per job
   for (std::size_t k = 0; k < jobs.size(); ++k) {
-    const int joints = jobs[k].job.foot.model == foot::FootModel::point ? 4 : 6;
+    const int joints = jobs[k].walker.foot.model == foot::FootModel::point ? 4 : 6;
     for (int j = 0; j < joints; ++j) {
       Series s{std::string(joint_name(j)) + (jobs.size() > 1 ? ", " + jobs[k].label : ""), {}, {}, true, k > 0,
                palette(j)};

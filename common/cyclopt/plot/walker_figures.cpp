@@ -57,10 +57,10 @@ Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults
   }
   if (kind == "foot") {
     for (const WalkerJobResults& job : jobs)
-      if (job.job.foot.model != foot::FootModel::point)
+      if (job.walker.foot.model != foot::FootModel::point)
         return {"foot_shape", "Foot shape of job " + std::to_string(job.id) +
                                   " with its generating polygon (seed 001 Fig. 3.5a)",
-                foot_shape_scene(job.job.foot), {}};
+                foot_shape_scene(job.walker.foot), {}};
     throw std::invalid_argument("the given jobs all walk on point feet, which have no foot shape");
   }
   std::string known;

@@ -1,5 +1,6 @@
 #include "cyclopt/plot/walker_job_results.hpp"
 
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
 
 #include <cmath>
@@ -8,6 +9,20 @@
 
 namespace cyclopt::plot {
 
+StoredWalker stored_walker(const nlohmann::json& spec) {
+  StoredWalker w;
+  w.setup = spec.get<records::WalkerSetupRecord>();
+  w.foot = io::foot_value(w.setup.foot, "foot");
+  w.constants.points = w.setup.points.value_or(w.constants.points);
+  w.constants.bezier_degree = w.setup.bezier_degree.value_or(w.constants.bezier_degree);
+  return w;
+}
+
+const nlohmann::json& stored_spec(const nlohmann::json& doc) {
+  const bool resolved = doc.contains("resolved_spec") && doc["resolved_spec"].is_object();
+  return resolved ? doc["resolved_spec"] : doc.at("spec");
+}
+
 WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   WalkerJobResults r;
   r.id = doc.value("id", std::int64_t{0});
@@ -15,9 +30,9 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   if (scene != "walker" || task == "foot_sweep" || !doc.contains("spec"))
     throw std::invalid_argument("job " + std::to_string(r.id) + " is a " + scene + " " + task +
                                 " job; pictures of gaits need a walker evaluate, optimise, multistart or sweep job");
-  r.spec = doc["spec"];
-  r.job = jobs::parse_walker_job(r.spec, task == "sweep");
-  const std::string foot = r.job.foot.name.empty() ? std::string(foot::to_string(r.job.foot.model)) : r.job.foot.name;
+  r.spec = stored_spec(doc);
+  r.walker = stored_walker(r.spec);
+  const std::string foot = r.walker.foot.name.empty() ? std::string(foot::to_string(r.walker.foot.model)) : r.walker.foot.name;
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
   r.points = gait_points(doc, 0);

@@ -1,12 +1,14 @@
 #pragma once
 // The solved points of one walker job as the figures need them, read from a job document: the
 // JSON `cyclopt export` writes (job row with spec, events, curves, solutions, trajectories),
-// whether it came from the server, a database file or an exported file. Values and trajectories
-// are read through the result contract (records/), so the figures see typed fields only.
+// whether it came from the server, a database file or an exported file. The walker, values and
+// trajectories are read through the result contract (records/), so the figures see typed fields only.
 
+#include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/records/sensitivity_records.hpp"
-#include "cyclopt/jobs/walker/walker_job_spec.hpp"
+#include "cyclopt/records/walker_setup_record.hpp"
+#include "cyclopt/walker/walker_model.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,11 +28,25 @@ struct GaitPoint {
   std::optional<records::KktSensitivitiesRecord> sensitivities;  // values.sensitivities of an optimum
 };
 
+// The walker a job's points were solved on, from its setup record.
+struct StoredWalker {
+  records::WalkerSetupRecord setup;
+  foot::FootSpec foot;
+  walker::WalkingConstants constants;  // P and M of the setup, the model's defaults where it has none
+  walker::WalkerModel<double> model() const { return walker::make_walker_model(foot, constants); }
+};
+
+// The setup record of a job document's stored spec (the resolved spec where the job has one).
+// Throws records::RecordError, or SpecError for a foot that is no preset or valid foot spec.
+StoredWalker stored_walker(const nlohmann::json& spec);
+// That stored spec.
+const nlohmann::json& stored_spec(const nlohmann::json& document);
+
 struct WalkerJobResults {
   std::int64_t id = 0;
   std::string label;  // for legends: the spec's name, else "job N: foot, objective"
-  nlohmann::json spec;
-  jobs::WalkerJob job;  // parsed spec: foot, model constants, objective
+  nlohmann::json spec;  // as stored (the resolved spec where the job has one)
+  StoredWalker walker;
   std::vector<GaitPoint> points;  // curve 0, in point order
 };
 

@@ -69,7 +69,7 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
       throw SpecError("feet", "must be an array of 1-64 foot preset names or foot specs");
     for (std::size_t i = 0; i < f.size(); ++i) {
       const std::string path = "feet[" + std::to_string(i) + "]";
-      j.feet.push_back(named(foot_value(f[i], path), f[i], path));
+      j.feet.push_back(named(io::foot_value(f[i], path), f[i], path));
     }
   } else {  // seed 001 section 9.2
     for (const foot::FittedFoot* f : foot::select_fitted_feet({.section_9_2_only = true})) {

@@ -66,7 +66,7 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
     walker.erase(key);
   if (!walker.contains("foot")) walker["foot"] = kDefaultStartFoot;
   if (!walker.contains("speeds")) walker["speeds"] = kDefaultSpeeds;
-  j.start_foot = foot_value(walker["foot"], "foot");
+  j.start_foot = io::foot_value(walker["foot"], "foot");
   if (j.start_foot.model == foot::FootModel::point)
     throw SpecError("foot", "the start foot must be a rolling foot (HM or HMT): point feet have no geometry to design");
   // Only the foot's geometry is designed (the density is set per design, the masses follow it).
@@ -485,9 +485,11 @@ JobCost design_cost(const DesignJob& j) {
 // every design field.
 nlohmann::json design_job_json(const DesignJob& j) {
   nlohmann::json r = walker_job_json(j.walker, true, true);
-  r["foot"] = io::to_json(j.start_foot);
+  records::WalkerSetupRecord setup = walker_setup(j.walker);  // with the start foot as given
+  setup.foot = io::to_json(j.start_foot);
+  setup.design_speed = j.design_speed;
+  r.update(nlohmann::json(setup));
   r["densities"] = j.densities;
-  r["design_speed"] = j.design_speed;
   r["references"] = j.references;
   r["sweep_starts"] = j.sweep_starts;
   r["foot_scale"] = j.foot_scale;
@@ -501,14 +503,6 @@ nlohmann::json design_job_json(const DesignJob& j) {
 }
 
 }  // namespace
-
-FootDesignSetup foot_design_setup(const nlohmann::json& spec) {
-  const DesignJob j = parse_design_job(spec, parse_common_job_fields(spec));
-  FootDesignSetup setup{j.walker, j.design_speed};
-  setup.walker.foot = j.start_foot;
-  setup.walker.problem.free_parameters.clear();
-  return setup;
-}
 
 JobKind foot_design_kind() {
   std::vector<std::string> fields;

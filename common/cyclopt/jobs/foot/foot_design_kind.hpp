@@ -31,19 +31,9 @@
 // phase ends; a resumed job replays the finished solves and runs from its checkpoints
 // (sweep_checkpoints.hpp) instead of solving them again.
 #include "cyclopt/service/job_kind.hpp"
-#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 
 namespace cyclopt::jobs {
 
 service::JobKind foot_design_kind();
-
-// What readers of a stored foot_design job (its figures) need of its spec, parsed as the kind
-// parses it (defaults filled in): the walker part with the start foot as given and no free
-// parameters, and the design speed. Throws SpecError like the kind.
-struct FootDesignSetup {
-  WalkerJob walker;
-  double design_speed = 0.0;
-};
-FootDesignSetup foot_design_setup(const nlohmann::json& spec);
 
 }  // namespace cyclopt::jobs

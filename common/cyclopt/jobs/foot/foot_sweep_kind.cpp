@@ -42,7 +42,7 @@ foot::FootSpec foot_at(const FootSweep& s, double value) {
 FootSweep parse(const nlohmann::json& spec, const CommonJobFields&) {
   FootSweep s;
   if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
-  s.base = foot_value(spec["foot"], "foot");
+  s.base = io::foot_value(spec["foot"], "foot");
   if (!spec.contains("sweep")) throw SpecError("sweep", "is required: {\"parameter\": ..., \"values\": \"lo:step:hi\"}");
   const nlohmann::json& sw = object_value(spec["sweep"], "sweep");
   reject_unknown_keys(sw, "sweep", {"parameter", "values"});

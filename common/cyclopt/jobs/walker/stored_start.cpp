@@ -1,5 +1,6 @@
 #include "cyclopt/jobs/walker/stored_start.hpp"
 
+#include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/service/spec_fields.hpp"
@@ -45,8 +46,8 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
     throw SpecError("start.point", "point " + where + " of " + job_name + " holds no gait parameters x" +
                                        (point.gait ? "" : " (no gait was found there)"));
   if (!spec.contains("foot")) return spec;  // the walker fields' own check names "foot"
-  const foot::FootSpec foot = foot_value(spec["foot"], "foot");
-  const foot::FootSpec stored_foot = foot_value(stored_spec["foot"], "foot");
+  const foot::FootSpec foot = io::foot_value(spec["foot"], "foot");
+  const foot::FootSpec stored_foot = io::foot_value(stored_spec["foot"], "foot");
   if (foot.model != stored_foot.model)
     throw SpecError("start.job", job_name + " is for the foot model " + std::string(foot::to_string(stored_foot.model)) +
                                      ", this job's foot is " + std::string(foot::to_string(foot.model)) +

@@ -5,18 +5,20 @@
 
 namespace cyclopt::jobs {
 
-using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
+records::WalkerSetupRecord walker_setup(const WalkerJob& job) {
+  return {.foot = io::to_json(job.foot),
+          .points = job.constants.points,
+          .bezier_degree = job.constants.bezier_degree,
+          .objective = job.problem.objective == walker::Objective::squared_torque ? "f_usq" : "f_mech",
+          .design_speed = std::nullopt};
+}
 
 nlohmann::json walker_job_json(const WalkerJob& job, bool sweep, bool random_starts) {
-  nlohmann::json j;
-  j["foot"] = io::to_json(job.foot);
+  nlohmann::json j = walker_setup(job);
   if (sweep)
     j["speeds"] = job.speeds;
   else
     j["speed"] = job.speeds.front();
-  j["objective"] = job.problem.objective == walker::Objective::squared_torque ? "f_usq" : "f_mech";
-  j["points"] = job.constants.points;
-  j["bezier_degree"] = job.constants.bezier_degree;
   j["quadrature"] = job.problem.quadrature == walker::Quadrature::trapezoid ? "trapezoid" : "corrected_trapezoid";
   j["positive_power_band"] = job.problem.positive_power_band;
   j["free_parameters"] = job.problem.free_parameters;

@@ -1,6 +1,5 @@
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
 
-#include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/jobs/solver_fields.hpp"
 #include "cyclopt/jobs/walker/design_bounds_spec.hpp"
@@ -15,15 +14,6 @@ namespace cyclopt::jobs {
 
 using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
 
-foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path) {
-  if (v.is_string()) try {
-      return foot::foot_preset(v.get<std::string>()).spec;
-    } catch (const SpecError& e) {
-      throw SpecError(path, e.what());
-    }
-  return io::foot_spec_from_json(object_value(v, path), path);
-}
-
 std::vector<std::string> walker_job_fields(bool sweep) {
   return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "positive_power_band",
           "free_parameters", "design_bounds", "start", "multistart"};
@@ -36,7 +26,7 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
 WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& common, bool sweep) {
   WalkerJob job;
   if (!spec.contains("foot")) throw SpecError("foot", "is required: a preset name or a foot spec object");
-  job.foot = foot_value(spec["foot"], "foot");
+  job.foot = io::foot_value(spec["foot"], "foot");
   const std::string speed_key = sweep ? "speeds" : "speed";
   if (!spec.contains(speed_key))
     throw SpecError(speed_key, "is required (m/s, in [" + std::to_string(kMinWalkingSpeed) + ", " +

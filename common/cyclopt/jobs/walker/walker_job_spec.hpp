@@ -64,9 +64,6 @@ struct WalkerJob {
   walker::WalkerModel<double> model() const { return walker::make_walker_model(foot, constants); }
 };
 
-// The spec's "foot": a preset name or a foot spec object; throws SpecError naming "foot...".
-foot::FootSpec foot_value(const nlohmann::json& v, const std::string& path);
-
 // Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed"; the
 // objective and the solver come from the parsed common fields. Throws SpecError naming the first
 // invalid field and its admissible range.
