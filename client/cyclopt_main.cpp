@@ -17,8 +17,9 @@
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/jobs/builtin_job_kinds.hpp"
-#include "cyclopt/service/job_spec.hpp"
+#include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/service/common_job_fields.hpp"
+#include "cyclopt/service/job_schema.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/stored_references.hpp"
 #include "cyclopt/storage/result_queries.hpp"
@@ -460,16 +461,31 @@ int watch(Session& s, const Options& o, std::int64_t job_id) {
   return exit_for_state(done->state);
 }
 
-// The server's own validation (service::validate_job_spec), run before sending: a bad spec is
-// rejected naming the field even when no server is reachable; a misspelled foot preset gets a
-// suggestion.
+// The feet a spec gives as a preset name or a foot spec ("foot", "reference", "feet"), with their fields.
+std::vector<std::pair<std::string, nlohmann::json>> given_feet(const nlohmann::json& spec) {
+  std::vector<std::pair<std::string, nlohmann::json>> feet;
+  const auto given = [](const nlohmann::json& f) { return f.is_string() || (f.is_object() && !f.contains("fit")); };
+  for (const char* key : {"foot", "reference"})
+    if (spec.contains(key) && given(spec[key])) feet.emplace_back(key, spec[key]);
+  if (spec.contains("feet") && spec["feet"].is_array())
+    for (std::size_t i = 0; i < spec["feet"].size(); ++i)
+      if (given(spec["feet"][i])) feet.emplace_back("feet[" + std::to_string(i) + "]", spec["feet"][i]);
+  return feet;
+}
+
+// Checked before sending, without the job kinds (the server, which has them, checks the rest): the
+// fields every spec shares, the form of references to stored results (resolved by the server,
+// which has the database), every foot given by preset or spec, then the job schema
+// (service/job_schema.hpp). A bad spec is rejected naming the field even when no server is reachable; a
+// misspelled foot preset gets a suggestion.
 void validate_locally(const std::string& spec_json) {
   const nlohmann::json spec = nlohmann::json::parse(spec_json);
   try {
-    // A start naming a stored point and a foot naming a stored fit are resolved by the server,
-    // which has the database; with a stored fit the rest of the spec is left to the server too.
-    if (cyclopt::service::stored_fit_references(spec).empty())
-      cyclopt::service::validate_job_spec(cyclopt::service::without_stored_start(spec), cyclopt::jobs::builtin_job_kinds());
+    cyclopt::service::parse_common_job_fields(spec);
+    cyclopt::service::stored_point_reference(spec);
+    cyclopt::service::stored_fit_references(spec);
+    for (const auto& [field, foot] : given_feet(spec)) cyclopt::io::foot_value(foot, field);
+    cyclopt::service::check_job_schema(spec);
   } catch (const cyclopt::SpecError& e) {
     std::string hint;
     if (e.field().rfind("foot", 0) == 0 && spec.contains("foot") && spec["foot"].is_string()) {

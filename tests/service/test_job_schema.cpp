@@ -2,11 +2,12 @@
 // of the README and of the shell scripts (tests/service/*.sh, deploy/run-main-job.sh) is valid
 // under the schema and accepted by the server, specs the server refuses are refused by the schema
 // at the same field, and the schema's enums and per-task fields are the server's. The C++ validator is the truth: the
-// schema may accept more (it cannot count a start vector's length), never less.
-#include "json_schema_validator.hpp"
+// schema may accept more (it cannot count a start vector's length), never less. The schema is the
+// one the build embeds (service/job_schema.hpp), which clients check specs against.
 #include "spec_snippets.hpp"
 
 #include "cyclopt/jobs/builtin_job_kinds.hpp"
+#include "cyclopt/service/job_schema.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 
@@ -26,10 +27,8 @@ namespace fs = std::filesystem;
 
 const fs::path kSource = CYCLOPT_SOURCE_DIR;
 
-const JsonSchemaValidator& job_schema() {
-  static const JsonSchemaValidator v(kSource / "proto/schemas", "job.schema.json");
-  return v;
-}
+using service::job_schema;
+using service::JsonSchemaValidator;
 
 const service::JobKindRegistry& registry() {
   static const service::JobKindRegistry r = jobs::builtin_job_kinds();
@@ -177,6 +176,31 @@ TEST(JobSchema, EnumsAndTaskFieldsAreTheServers) {
     EXPECT_EQ(rule.at("properties").at("scene").at("const").get<std::string>(), kind->scenes.at(0)) << task;
     for (const std::string& field : fields) EXPECT_TRUE(properties.contains(field)) << task << ": " << field;
   }
+}
+
+// What a client tells before it sends a spec: the field the schema refuses, as a path.
+TEST(JobSchema, NamesTheFieldItRefuses) {
+  const auto field = [](const json& spec) {
+    try {
+      service::check_job_schema(spec);
+    } catch (const SpecError& e) {
+      return e.field();
+    }
+    return std::string("accepted");
+  };
+  const json optimise = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.0}};
+  EXPECT_EQ(field(optimise), "accepted");
+  json s = optimise;
+  s["speed"] = 9;
+  EXPECT_EQ(field(s), "speed");
+  s = optimise;
+  s.erase("foot");
+  EXPECT_EQ(field(s), "foot");
+  s = optimise;
+  s["multistart"] = {{"starts", 0}};
+  EXPECT_EQ(field(s), "multistart.starts");
+  s = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "1:0.1:1.2"}, {"feet", {"point", 3}}};
+  EXPECT_EQ(field(s), "feet[1]");
 }
 
 // The validator itself, on small schemas: each keyword can refuse.

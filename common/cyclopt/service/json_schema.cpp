@@ -1,12 +1,13 @@
-#include "json_schema_validator.hpp"
+#include "cyclopt/service/json_schema.hpp"
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 #include <stdexcept>
 
-namespace cyclopt::testing {
+namespace cyclopt::service {
 
 namespace {
 
@@ -51,19 +52,26 @@ std::string child(const std::string& where, const std::string& key) { return whe
 
 }  // namespace
 
-JsonSchemaValidator::JsonSchemaValidator(std::filesystem::path directory, const std::string& file)
-    : directory_(std::move(directory)), root_(file) {
+JsonSchemaValidator::JsonSchemaValidator(SchemaFiles files, const std::string& file)
+    : files_(std::move(files)), root_(file) {
   document(root_);
 }
+
+JsonSchemaValidator::JsonSchemaValidator(const std::filesystem::path& directory, const std::string& file)
+    : JsonSchemaValidator(
+          [directory](const std::string& name) {
+            std::ifstream in(directory / name);
+            if (!in) throw std::runtime_error("cannot read schema " + (directory / name).string());
+            return std::string(std::istreambuf_iterator<char>(in), {});
+          },
+          file) {}
 
 const json& JsonSchemaValidator::document(const std::string& file) const {
   auto it = documents_.find(file);
   if (it != documents_.end()) return it->second;
-  std::ifstream in(directory_ / file);
-  if (!in) throw std::runtime_error("cannot read schema " + (directory_ / file).string());
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(files_(file));
   } catch (const json::exception& e) {
     throw std::runtime_error("schema " + file + " is not JSON: " + e.what());
   }
@@ -187,4 +195,4 @@ void JsonSchemaValidator::check(const json& schema, const std::string& file, con
   }
 }
 
-}  // namespace cyclopt::testing
+}  // namespace cyclopt::service
