@@ -1,12 +1,27 @@
 # cmake -DGRAPH=module_graph.cmake -DROOT=<common/> -P CheckModuleIncludes.cmake
-# Fails when a file under ROOT/cyclopt/<module>/ includes "cyclopt/<other>/..." and <other> is
-# neither <module> nor one of its (transitive) link dependencies (CYCLOPT_DEPS_<module>).
+# Fails when a file under ROOT/cyclopt/<module>/ (subfolders too) includes "cyclopt/<other>/..."
+# and <other> is neither <module> nor one of its (transitive) link dependencies
+# (CYCLOPT_DEPS_<module>); when <module> links a module of CYCLOPT_FORBIDDEN_<module>; and when
+# the files of <module> hold more than CYCLOPT_MAX_LINES_<module> lines (common/CMakeLists.txt).
 cmake_minimum_required(VERSION 3.25)
 include(${GRAPH})
 set(violations "")
 foreach(module IN LISTS CYCLOPT_MODULES)
-  file(GLOB_RECURSE files ${ROOT}/cyclopt/${module}/*.hpp ${ROOT}/cyclopt/${module}/*.cpp)
+  foreach(forbidden IN LISTS CYCLOPT_FORBIDDEN_${module})
+    if(forbidden IN_LIST CYCLOPT_DEPS_${module})
+      string(APPEND violations "  cyclopt_${module} links cyclopt_${forbidden}, which its rules forbid\n")
+    endif()
+  endforeach()
+  file(GLOB_RECURSE files ${ROOT}/cyclopt/${module}/*)
+  set(lines 0)
   foreach(file IN LISTS files)
+    file(READ ${file} text)
+    string(REGEX MATCHALL "\n" newlines "${text}")
+    list(LENGTH newlines n)
+    math(EXPR lines "${lines} + ${n}")
+    if(NOT file MATCHES "\\.(hpp|cpp)$")
+      continue()
+    endif()
     file(STRINGS ${file} includes REGEX "^#include \"cyclopt/[a-z_]+/")
     foreach(line IN LISTS includes)
       string(REGEX MATCH "cyclopt/([a-z_]+)/" _ "${line}")
@@ -16,7 +31,10 @@ foreach(module IN LISTS CYCLOPT_MODULES)
       endif()
     endforeach()
   endforeach()
+  if(CYCLOPT_MAX_LINES_${module} AND lines GREATER CYCLOPT_MAX_LINES_${module})
+    string(APPEND violations "  ${module}/ holds ${lines} lines, more than its ${CYCLOPT_MAX_LINES_${module}}\n")
+  endif()
 endforeach()
 if(violations)
-  message(FATAL_ERROR "Includes against the module graph (link the module in its CMakeLists or move the code):\n${violations}")
+  message(FATAL_ERROR "Against the module graph and its rules (link the module in its CMakeLists or move the code):\n${violations}")
 endif()
