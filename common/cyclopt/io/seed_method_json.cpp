@@ -10,15 +10,17 @@ namespace cyclopt::io {
 
 using namespace giant_swing;
 
-nlohmann::json to_json(const RoundResult& round, double omega) {
-  return {{"phi_rate_over_omega", round.phi_rate / omega},
-          {"alpha_deg", round.alpha * kDegPerRad},
-          {"alpha_rate_deg_s", round.alpha_rate * kDegPerRad},
-          {"duration_s", round.duration},
-          {"friction_loss_J", round.friction_loss},
-          {"jerk_rad2_s5", round.jerk},
-          {"moment_Nm2_s", round.torque_integral}};
+records::SwingRoundRecord round_record(const RoundResult& round, double omega) {
+  return {.phi_rate_over_omega = round.phi_rate / omega,
+          .alpha_deg = round.alpha * kDegPerRad,
+          .alpha_rate_deg_s = round.alpha_rate * kDegPerRad,
+          .duration_s = round.duration,
+          .friction_loss_J = round.friction_loss,
+          .jerk_rad2_s5 = round.jerk,
+          .moment_Nm2_s = round.torque_integral};
 }
+
+nlohmann::json to_json(const RoundResult& round, double omega) { return round_record(round, omega); }
 
 nlohmann::json to_json(const SeedMethodResult& r, const TaskSpec& spec) {
   nlohmann::json j;

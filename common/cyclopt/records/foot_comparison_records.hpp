@@ -5,6 +5,7 @@
 // members sit beside the walker point's own (walker_point_record.hpp).
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/point_record.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -58,5 +59,10 @@ void to_json(nlohmann::json& j, const ComparedSpeedRecord& s);
 void from_json(const nlohmann::json& j, ComparedSpeedRecord& s);  // throws RecordError naming the field
 void to_json(nlohmann::json& j, const ComparedFootRecord& f);
 void from_json(const nlohmann::json& j, ComparedFootRecord& f);
+
+template <>
+inline constexpr bool is_point_values<ComparedSpeedRecord> = true;
+template <>
+inline constexpr bool is_point_values<ComparedFootRecord> = true;
 
 }  // namespace cyclopt::records

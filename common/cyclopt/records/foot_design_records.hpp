@@ -8,6 +8,7 @@
 // 6 + 4k: ComparedSpeedRecord).
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/point_record.hpp"
 #include "cyclopt/records/sensitivity_records.hpp"
 
 #include <nlohmann/json.hpp>
@@ -88,5 +89,10 @@ void to_json(nlohmann::json& j, const DesignPointRecord& p);
 void from_json(const nlohmann::json& j, DesignPointRecord& p);
 void to_json(nlohmann::json& j, const DesignedFootRecord& d);
 void from_json(const nlohmann::json& j, DesignedFootRecord& d);
+
+template <>
+inline constexpr bool is_point_values<DesignPointRecord> = true;
+template <>
+inline constexpr bool is_point_values<DesignedFootRecord> = true;
 
 }  // namespace cyclopt::records

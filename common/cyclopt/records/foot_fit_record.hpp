@@ -6,6 +6,7 @@
 // (service/stored_foot_fit.hpp).
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/point_record.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -76,5 +77,10 @@ void to_json(nlohmann::json& j, const FootFitRecord& f);
 void from_json(const nlohmann::json& j, FootFitRecord& f);  // throws RecordError naming the field
 void to_json(nlohmann::json& j, const FootFitAnglesRecord& a);
 void from_json(const nlohmann::json& j, FootFitAnglesRecord& a);  // throws RecordError naming the element
+
+template <>
+inline constexpr bool is_point_values<FootFitRecord> = true;
+template <>
+inline constexpr bool is_point_trajectory<FootFitAnglesRecord> = true;
 
 }  // namespace cyclopt::records

@@ -5,6 +5,7 @@
 // stable per eq. (5.90), the virtual constraints' Bezier coefficients eq. (5.16).
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/point_record.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -43,5 +44,8 @@ void to_json(nlohmann::json& j, const GaitRecord& g);
 void from_json(const nlohmann::json& j, GaitRecord& g);
 void to_json(nlohmann::json& j, const GaitTrajectoryRecord& t);
 void from_json(const nlohmann::json& j, GaitTrajectoryRecord& t);
+
+template <>
+inline constexpr bool is_point_trajectory<GaitTrajectoryRecord> = true;
 
 }  // namespace cyclopt::records

@@ -7,6 +7,7 @@
 // and a summary comparing the two.
 
 #include "cyclopt/records/json_fields.hpp"
+#include "cyclopt/records/point_record.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -97,5 +98,10 @@ void to_json(nlohmann::json& j, const SensitivityStepRecord& s);
 void from_json(const nlohmann::json& j, SensitivityStepRecord& s);
 void to_json(nlohmann::json& j, const SensitivitySummaryRecord& s);
 void from_json(const nlohmann::json& j, SensitivitySummaryRecord& s);
+
+template <>
+inline constexpr bool is_point_values<SensitivityStepRecord> = true;
+template <>
+inline constexpr bool is_point_values<SensitivitySummaryRecord> = true;
 
 }  // namespace cyclopt::records

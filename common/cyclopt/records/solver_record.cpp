@@ -17,6 +17,9 @@ void to_json(nlohmann::json& j, const SolverRecord& s) {
        {"kkt_error", s.kkt_error},
        {"constraint_violation", s.constraint_violation},
        {"x", s.x}};
+  if (!s.equality_multipliers.empty()) j["equality_multipliers"] = s.equality_multipliers;
+  if (!s.inequality_multipliers.empty()) j["inequality_multipliers"] = s.inequality_multipliers;
+  if (!s.bound_multipliers.empty()) j["bound_multipliers"] = s.bound_multipliers;
 }
 
 void from_json(const nlohmann::json& j, SolverRecord& s) {
@@ -33,6 +36,9 @@ void from_json(const nlohmann::json& j, SolverRecord& s) {
   s.kkt_error = number(j, r, "kkt_error");
   s.constraint_violation = number(j, r, "constraint_violation");
   s.x = numbers(j, r, "x");
+  s.equality_multipliers = j.contains("equality_multipliers") ? numbers(j, r, "equality_multipliers") : std::vector<double>{};
+  s.inequality_multipliers = j.contains("inequality_multipliers") ? numbers(j, r, "inequality_multipliers") : std::vector<double>{};
+  s.bound_multipliers = j.contains("bound_multipliers") ? numbers(j, r, "bound_multipliers") : std::vector<double>{};
 }
 
 }  // namespace cyclopt::records

@@ -1,6 +1,8 @@
 #pragma once
 // The solver family of the result contract: the summary of the solve that produced a point
-// (stored as values.solver), as nlp::SolverSummary reports it.
+// (stored as values.solver), as nlp::SolverSummary reports it - its one encoding, also in the
+// checkpoints a resumed sweep replays solves from (jobs/walker/sweep_checkpoints.hpp), which keep
+// the multipliers too.
 
 #include "cyclopt/records/json_fields.hpp"
 
@@ -18,6 +20,9 @@ struct SolverRecord {
   int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, failed_evaluations = 0;
   double wall_seconds = kUnset, objective = kUnset, kkt_error = kUnset, constraint_violation = kUnset;
   std::vector<double> x;  // the final iterate
+  // Its multipliers (nlp::SolverSummary's sign convention); empty in a stored point's values, kept
+  // in checkpoints so that a replayed solve warm-starts what follows as the original did.
+  std::vector<double> equality_multipliers, inequality_multipliers, bound_multipliers;
   bool operator==(const SolverRecord&) const = default;
 };
 

@@ -5,6 +5,7 @@
 // these (a sweep's found_by, a multistart's reached_by_starts); from_json ignores them.
 
 #include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/point_record.hpp"
 #include "cyclopt/records/sensitivity_records.hpp"
 #include "cyclopt/records/solver_record.hpp"
 
@@ -41,7 +42,14 @@ struct WalkerPointRecord {
 // The gait counts as solved when it is real and its solve (if any) succeeded.
 bool solved(const WalkerPointRecord& p);
 
+// Flat: the members beside each other in one object (also a sweep checkpoint's curve point,
+// jobs/walker/sweep_checkpoints.hpp).
+void to_json(nlohmann::json& j, const ContinuationStepRecord& c);
+void from_json(const nlohmann::json& j, ContinuationStepRecord& c);  // throws RecordError naming the field
 void to_json(nlohmann::json& j, const WalkerPointRecord& p);
 void from_json(const nlohmann::json& j, WalkerPointRecord& p);  // throws RecordError naming the field
+
+template <>
+inline constexpr bool is_point_values<WalkerPointRecord> = true;
 
 }  // namespace cyclopt::records
