@@ -12,7 +12,7 @@
 #include "machine_info.hpp"
 
 #include "cyclopt/plot/foot_comparison_figures.hpp"
-#include "cyclopt/jobs/foot/foot_comparison_kind.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
 #include "cyclopt/service/unit_job_context.hpp"
@@ -58,7 +58,7 @@ class MemoryJobContext final : public service::JobContext {
     solutions.push_back({{"curve", p.key.curve_index}, {"point", p.key.point_index},
                          {"parameter", std::isfinite(p.parameter) ? nlohmann::json(p.parameter) : nlohmann::json()},
                          {"objective", std::isfinite(p.objective) ? nlohmann::json(p.objective) : nlohmann::json()},
-                         {"status", p.status}, {"values", p.values}});
+                         {"status", p.status}, {"values", p.values()}});
     return true;
   }
   std::set<storage::PointKey> already_stored_points() override {

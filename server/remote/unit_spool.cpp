@@ -75,8 +75,8 @@ nlohmann::json point_to_json(const storage::SolutionPoint& p) {
                    {"iterations", p.iterations},
                    {"status", p.status},
                    {"required", p.required},
-                   {"values", p.values}};
-  if (p.trajectory) j["trajectory"] = *p.trajectory;
+                   {"values", p.values()}};
+  if (p.trajectory()) j["trajectory"] = *p.trajectory();
   return j;
 }
 
@@ -89,8 +89,7 @@ storage::SolutionPoint point_from_json(const nlohmann::json& j) {
   p.iterations = j.at("iterations").get<int>();
   p.status = j.at("status").get<std::string>();
   p.required = j.at("required").get<bool>();
-  p.values = j.at("values");
-  if (j.contains("trajectory")) p.trajectory = j.at("trajectory");
+  p.carry(j.at("values"), j.contains("trajectory") ? std::optional<nlohmann::json>(j.at("trajectory")) : std::nullopt);
   return p;
 }
 

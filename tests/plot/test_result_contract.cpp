@@ -102,7 +102,8 @@ TEST_F(ResultContract, PlotReadsEveryGaitFieldTheWriterStored) {
 TEST_F(ResultContract, AStoredPointOffTheContractIsAnErrorNamingTheField) {
   storage::SolutionPoint p;
   p.parameter = 1.0;
-  p.values["gait"] = {{"real", true}, {"f_mech", 0.1}};  // a writer that lost the other members
+  // A row off the contract, as a writer that lost the gait's other members would have stored it.
+  p.carry({{"gait", {{"real", true}, {"f_mech", 0.1}}}}, std::nullopt);
   const nlohmann::json spec = {{"scene", "walker"}, {"task", "evaluate"}, {"foot", "point"}, {"speed", 1.0}};
   try {
     plot::walker_job_results(stored_document(spec, {p}));
@@ -126,7 +127,7 @@ TEST_F(ResultContract, TheComparisonFiguresReadTheStoredRecords) {
       storage::SolutionPoint p;
       p.key = {1 + k, i};
       p.parameter = 1.0 + 0.5 * i;
-      p.values = s;
+      p.set_values(s);
       points.push_back(p);
     }
     records::ComparedFootRecord f;
@@ -140,7 +141,7 @@ TEST_F(ResultContract, TheComparisonFiguresReadTheStoredRecords) {
     storage::SolutionPoint p;
     p.key = {3, k};
     p.parameter = 1 + k;
-    p.values = f;
+    p.set_values(f);
     points.push_back(p);
   }
   records::ComparedSpeedRecord best;
@@ -150,7 +151,7 @@ TEST_F(ResultContract, TheComparisonFiguresReadTheStoredRecords) {
   best.reference_f_mech = 0.05;
   storage::SolutionPoint b;
   b.parameter = 1.0;
-  b.values = best;
+  b.set_values(best);
   points.push_back(b);
   const nlohmann::json spec = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "1:0.5:1.5"}};
   const plot::FootComparisonCurves c = plot::foot_comparison_curves(stored_document(spec, points));

@@ -104,8 +104,8 @@ nlohmann::json document_of(std::int64_t id, const StoredJob& job) {
   d["trajectories"] = nlohmann::json::array();
   for (const storage::SolutionPoint& p : job.points) {
     d["solutions"].push_back({{"curve", 0}, {"point", p.key.point_index}, {"parameter", p.parameter},
-                              {"status", p.status}, {"values", p.values}});
-    d["trajectories"].push_back({{"curve", 0}, {"point", p.key.point_index}, {"format", "json"}, {"data", *p.trajectory}});
+                              {"status", p.status}, {"values", p.values()}});
+    d["trajectories"].push_back({{"curve", 0}, {"point", p.key.point_index}, {"format", "json"}, {"data", *p.trajectory()}});
   }
   return d;
 }
@@ -473,7 +473,7 @@ TEST_F(WalkerFigures, QueryPrintsOneReadableLinePerPoint) {
     EXPECT_NE(table[0].find(column), std::string::npos) << column << " missing from: " << table[0];
   for (const std::string& line : table) EXPECT_LT(line.size(), 140u) << line;
   // The line of the 1.0 m/s point shows its step length and cadence = 60 / period.
-  const nlohmann::json& g = point_feet_->points[1].values["gait"];
+  const nlohmann::json& g = point_feet_->points[1].values().at("gait");
   char step[32], cadence[32];
   std::snprintf(step, sizeof step, "%.5g", g["step_length"].get<double>());
   std::snprintf(cadence, sizeof cadence, "%.5g", 60.0 / g["step_period"].get<double>());

@@ -35,7 +35,7 @@ bool mentions(const std::string& text, const std::string& part) { return text.fi
 
 TEST(DesignSpecs, TheSeedsSetUpIsAcceptedWithTheStartFootMovedOntoTheBounds) {
   EXPECT_EQ(rejection(design_spec()), "accepted");
-  const WalkerJob job = parse_walker_job(design_spec(), false);
+  const WalkerJob job = parse_walker_job(design_spec(), parse_common_job_fields(design_spec()), false);
   ASSERT_TRUE(job.problem.design_bounds);
   EXPECT_DOUBLE_EQ(job.problem.design_bounds->h_F_max, 0.1);
   EXPECT_DOUBLE_EQ(job.problem.design_bounds->l_HM_max, 0.4);
@@ -44,7 +44,7 @@ TEST(DesignSpecs, TheSeedsSetUpIsAcceptedWithTheStartFootMovedOntoTheBounds) {
   EXPECT_DOUBLE_EQ(job.foot.parameters[foot::hmt::l_HM], foot::foot_preset("P2-shoes-left-HMT").spec.parameters[foot::hmt::l_HM]);
   nlohmann::json s = design_spec();
   s["design_bounds"] = {{"h_F_max", 0.12}, {"k_HM_max", 0.3}, {"toe_within_height", false}};
-  const WalkerJob overridden = parse_walker_job(s, false);
+  const WalkerJob overridden = parse_walker_job(s, parse_common_job_fields(s), false);
   EXPECT_DOUBLE_EQ(overridden.problem.design_bounds->h_F_max, 0.12);
   EXPECT_DOUBLE_EQ(overridden.problem.design_bounds->k_HM_max, 0.3);
   EXPECT_FALSE(overridden.problem.design_bounds->toe_within_height);

@@ -1,7 +1,7 @@
 // Job-spec validation: value ranges, common fields, the foot_sweep kind; every error names its
 // field.
 #include "cyclopt/jobs/builtin_job_kinds.hpp"
-#include "cyclopt/jobs/foot/foot_sweep_kind.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
@@ -155,7 +155,7 @@ TEST(JobSpec, AnIpoptJobRoundsThePositivePartUnlessTheSpecSaysOtherwise) {
   const auto band = [](const nlohmann::json& extra) {
     nlohmann::json spec = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.3}};
     spec.update(extra);
-    return parse_walker_job(spec, false).problem.positive_power_band;
+    return parse_walker_job(spec, parse_common_job_fields(spec), false).problem.positive_power_band;
   };
   const nlohmann::json ipopt = {{"solver", "ipopt"}};
   EXPECT_EQ(band(nlohmann::json::object()), 0.0);

@@ -11,6 +11,8 @@
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/jobs/giant_swing/giant_swing_job_spec.hpp"
+#include "cyclopt/records/sweep_records.hpp"
+#include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/resolved_spec.hpp"
 #include "cyclopt/jobs/walker/stored_start.hpp"
@@ -284,10 +286,14 @@ class StoredStartReferences : public testing::MemqServerTest {
     // job 1: an optimised point-foot gait (curve 0, point 0) and a point without x (curve 1, point 0)
     store_->submit("walker", "walker", "optimise", R"({"scene": "walker", "task": "optimise", "foot": "point", "speed": 1.0})");
     storage::SolutionPoint p;
-    p.values = {{"x", std::vector<double>(20, 0.1)}};
+    records::WalkerPointRecord walker_point;
+    walker_point.x = std::vector<double>(20, 0.1);
+    p.set_values(walker_point);
     store_->store_point(1, p);
     p.key = {1, 0};
-    p.values = {{"reason", "no gait found"}};
+    records::SweepBestRecord not_found;
+    not_found.reason = "no gait found";
+    p.set_values(not_found);
     store_->store_point(1, p);
     store_->submit("swing", "giant_swing", "giant_swing", R"({"scene": "giant_swing", "task": "giant_swing"})");  // job 2
   }

@@ -6,7 +6,7 @@
 // feet already swept, whichever unit swept them.
 #include "cyclopt/service/unit_job_context.hpp"
 
-#include "cyclopt/jobs/foot/foot_comparison_kind.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
 
 #include <gtest/gtest.h>

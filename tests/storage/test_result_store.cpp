@@ -34,8 +34,7 @@ SolutionPoint point(int i) {
   p.key = {0, i};
   p.parameter = 0.1 * i;
   p.objective = i * i;
-  p.values = {{"i", i}};
-  p.trajectory = nlohmann::json::array({1, 2, 3});
+  p.carry({{"i", i}}, nlohmann::json::array({1, 2, 3}));  // the store keeps any JSON the records wrote
   return p;
 }
 
@@ -206,8 +205,9 @@ TEST_F(ResultStoreTest, FullDiskFailsTheWriteAndKeepsWhatWasStored) {
     s.connection().exec("PRAGMA max_page_count = " + std::to_string(q.int64(0)));
   }
   SolutionPoint big = point(1);
-  big.trajectory = nlohmann::json::array();
-  for (int i = 0; i < 20000; ++i) big.trajectory->push_back(i);
+  nlohmann::json long_trajectory = nlohmann::json::array();
+  for (int i = 0; i < 20000; ++i) long_trajectory.push_back(i);
+  big.carry(big.values(), long_trajectory);
   try {
     s.store_point(job, big);
     FAIL() << "a write beyond max_page_count succeeded";

@@ -5,6 +5,7 @@
 // round trip through the stored form is part of what is checked.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
+#include "cyclopt/records/json_fields.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -136,6 +137,6 @@ TEST(SweepResume, CheckpointTextsRoundTripEveryField) {
   EXPECT_EQ(back.bound_multipliers, s.bound_multipliers);
   EXPECT_EQ(back.equality_multipliers.size(), 0);
   nlohmann::json bad = jobs::summary_to_json(s);
-  bad["termination"] = 99;
-  EXPECT_THROW(jobs::summary_from_json(bad), nlohmann::json::exception);
+  bad["termination"] = "no_such_end";
+  EXPECT_THROW(jobs::summary_from_json(bad), records::RecordError);
 }

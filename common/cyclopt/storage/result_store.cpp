@@ -353,14 +353,14 @@ bool ResultStore::store_point(std::int64_t job_id, const SolutionPoint& p) {
       .bind(6, p.constraint_violation)
       .bind(7, std::int64_t{p.iterations})
       .bind(8, p.status)
-      .bind(9, p.values.dump())
+      .bind(9, p.values().dump())
       .bind(10, unix_now())
       .bind(11, std::int64_t{p.required})
       .run();
   if (db_.changes() == 0) return false;
-  if (p.trajectory) {
+  if (p.trajectory()) {
     Statement tr(db_, "INSERT INTO trajectories (solution_id, format, data) VALUES (?, 'json', ?)");
-    tr.bind(1, db_.last_insert_rowid()).bind_blob(2, p.trajectory->dump()).run();
+    tr.bind(1, db_.last_insert_rowid()).bind_blob(2, p.trajectory()->dump()).run();
   }
   tx.commit();
   return true;

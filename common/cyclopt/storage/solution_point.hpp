@@ -1,6 +1,9 @@
 #pragma once
 // One solved point of a job as it is committed to the solutions table (and, optionally, its
-// trajectory). (curve_index, point_index) identifies the point within its job.
+// trajectory). (curve_index, point_index) identifies the point within its job. Its values and
+// trajectory are set from records of the result contract only (records/point_record.hpp).
+
+#include "cyclopt/records/point_record.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -8,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace cyclopt::storage {
 
@@ -35,8 +39,31 @@ struct SolutionPoint {
   // continuation's grid values) and so counts for the job's outcome (job_outcome.hpp), or a by-product
   // (a sweep's continuation runs, a continuation's steps between grid values).
   bool required = true;
-  nlohmann::json values = nlohmann::json::object();  // whatever the job kind reports
-  std::optional<nlohmann::json> trajectory;          // stored as a "json" trajectory blob
+
+  // What the job kind reports: records of the result contract (records/), their members merged
+  // into one object (a later record's member replaces an earlier one's of the same name).
+  template <records::PointValues... Records>
+  void set_values(const Records&... records) {
+    values_ = nlohmann::json::object();
+    (values_.update(nlohmann::json(records)), ...);
+  }
+  // Stored as a "json" trajectory blob.
+  template <records::PointTrajectory Record>
+  void set_trajectory(const Record& record) {
+    trajectory_ = nlohmann::json(record);
+  }
+  // A point whose values and trajectory records wrote, carried over as they are (read back from a
+  // work unit's spool, server/remote/unit_spool.hpp).
+  void carry(nlohmann::json values, std::optional<nlohmann::json> trajectory) {
+    values_ = std::move(values);
+    trajectory_ = std::move(trajectory);
+  }
+  const nlohmann::json& values() const { return values_; }
+  const std::optional<nlohmann::json>& trajectory() const { return trajectory_; }
+
+ private:
+  nlohmann::json values_ = nlohmann::json::object();
+  std::optional<nlohmann::json> trajectory_;
 };
 
 }  // namespace cyclopt::storage

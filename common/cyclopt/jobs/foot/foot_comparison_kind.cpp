@@ -1,17 +1,35 @@
-#include "cyclopt/jobs/foot/foot_comparison_kind.hpp"
-
+// Job kind "foot_comparison" (scene walker; issue 16 item 5, seed 001 section 9.2): one chapter-9
+// speed sweep per foot, the best foot per speed and each foot's mean f_mech and saving against
+// the reference feet (studies/foot_comparison.hpp).
+//
+//   {"scene": "walker", "task": "foot_comparison", "speeds": "0.3:0.1:2.3",
+//    "feet": ["P1-shoes-left-HM-SG", "P2-shoes-left-HMT-SG", {"model": "HM", ...}],
+//    "reference": "point", "multistart": {"starts": 20}}
+//
+// feet: preset names or foot specs (default: the 16 feet of section 9.2); reference: the foot
+// savings are measured against (default "point", Table D.1), swept first; the other walker
+// fields as for a sweep (speeds, points, bezier_degree, quadrature, objective, solver,
+// multistart, continuation.seed_speeds / min_trust_region) apply to every foot; "foot", "start"
+// and "free_parameters" are not fields of it.
+//
+// Stored curves: 0 the best foot per speed (its point, values.foot, values.saving); 1 the
+// reference; 2 .. F+1 the feet in the given order, each the best point of its sweep per speed
+// (values.found_by, or status "not found" with values.reason); F+2 one point per foot (parameter:
+// its curve index) with values.foot, mean_f_mech, common_speeds, speeds_found, saving,
+// best_fitted, sweep_seconds.
 #include "cyclopt/foot/fitted_feet.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
-#include "cyclopt/records/foot_comparison_records.hpp"
-#include "cyclopt/jobs/walker/foot_sweep_points.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/jobs/solver_progress.hpp"
-#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/jobs/walker/continuation_fields.hpp"
+#include "cyclopt/jobs/walker/foot_sweep_points.hpp"
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
-#include "cyclopt/jobs/walker/sweep_fields.hpp"
-#include "cyclopt/service/unit_job_context.hpp"
 #include "cyclopt/jobs/walker/walker_job_cost.hpp"
 #include "cyclopt/jobs/walker/walker_job_json.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
+#include "cyclopt/records/foot_comparison_records.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
 #include "cyclopt/studies/foot_comparison.hpp"
 #include "cyclopt/studies/walker_family.hpp"
 
@@ -25,12 +43,13 @@
 namespace cyclopt::jobs {
 
 using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
+
 namespace {
 
 struct ComparisonJob {
   WalkerJob walker;                       // the common fields; walker.foot is the reference
   std::vector<foot::FootSpec> feet;       // the reference first, then the compared feet
-  SweepFields sweeps;                     // "continuation"
+  studies::SpeedSweepOptions sweep;       // every foot's, the job's observers not attached
 };
 
 // A compared foot is known by its preset name, else by its spec's name, else by its field path.
@@ -77,7 +96,12 @@ ComparisonJob parse_comparison_job(const nlohmann::json& spec, const CommonJobFi
       j.feet.back().name = f->name();
     }
   }
-  j.sweeps = parse_sweep_fields(spec);
+  j.sweep.speeds = j.walker.speeds;
+  j.sweep.starts = j.walker.starts;
+  j.sweep.seeds = j.walker.seeds;
+  j.sweep.scale = j.walker.scale;
+  j.sweep.continuation.corrector = j.walker.solver;
+  parse_sweep_continuation(spec, j.sweep);
   std::set<std::string> seen;
   for (std::size_t i = 0; i < j.feet.size(); ++i)
     if (!seen.insert(j.feet[i].name).second)
@@ -112,7 +136,7 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   WalkerJob w = job.walker;
   w.foot = job.feet[k];
   const walker::WalkerModel<double> model = w.model();
-  studies::SpeedSweepOptions o = sweep_options(job.walker, job.sweeps, job.walker.starts);
+  studies::SpeedSweepOptions o = job.sweep;
   o.continuation.corrector.should_stop = stop_predicate(ctx);
   o.journal = sweep_journal(ctx);
   // Progress names the foot and the phase of its sweep. Points count the grid speeds of the feet
@@ -143,7 +167,7 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   });
   if (s.stopped || ctx.stop_reason() != StopReason::none) return;  // the next attempt resumes from the journal
   const studies::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
-  for (const storage::SolutionPoint& p : best_points(family, s, 1 + unit.index)) ctx.store_point(p);
+  for (const ComparedSpeedPoint& p : best_points(family, s, 1 + unit.index)) ctx.store_point(p.stored());
   ctx.store_checkpoint(kSweptFootCheckpoint, foot_sweep_to_json(s).dump());
 }
 
@@ -166,16 +190,16 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
     swept.push_back(unit_result(stored, unit, kSweptFootCheckpoint, [](const nlohmann::json& j) { return foot_sweep_from_json(j); }));
   const studies::FootComparisonResult r = studies::summarise_feet(job.walker.speeds, std::move(swept), 0);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::map<int, std::vector<storage::SolutionPoint>> best_of;  // curve 1 + k's points, of the feet best somewhere
+  std::map<int, std::vector<ComparedSpeedPoint>> best_of;  // curve 1 + k's points, of the feet best somewhere
   for (int i = 0; i < speeds; ++i) {
     const int best = r.best_foot[static_cast<std::size_t>(i)];
     const double ref = r.feet[0].f_mech[static_cast<std::size_t>(i)];
-    storage::SolutionPoint p;
-    records::ComparedSpeedRecord c;
+    ComparedSpeedPoint p;
+    records::ComparedSpeedRecord& c = p.speed;
     if (best < 0) {
-      p.key = {0, i};
-      p.parameter = job.walker.speeds[static_cast<std::size_t>(i)];
-      p.status = "not found";
+      p.point.row.key = {0, i};
+      p.point.row.parameter = job.walker.speeds[static_cast<std::size_t>(i)];
+      p.point.row.status = "not found";
       c.reason = "no compared foot has a point at this speed";
     } else {
       if (!best_of.count(best)) {
@@ -185,8 +209,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
                                     r.feet[static_cast<std::size_t>(best)], 1 + best);
       }
       p = best_of[best][static_cast<std::size_t>(i)];
-      p.key = {0, i};
-      c = p.values.get<records::ComparedSpeedRecord>();
+      p.point.row.key = {0, i};
       if (std::isfinite(ref) && ref > 0.0) c.saving = 1.0 - r.envelope_f_mech[static_cast<std::size_t>(i)] / ref;
     }
     c.reference_f_mech = ref;
@@ -198,8 +221,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       const double lo = *std::min_element(at_speed.begin(), at_speed.end());
       if (std::isfinite(width) && lo > 0.0) c.seed_spread = width / lo;
     }
-    p.values.update(nlohmann::json(c));
-    ctx.store_point(p);
+    ctx.store_point(p.stored());
   }
   for (int k = 0; k < feet; ++k) {
     const studies::FootSweepSummary& s = r.feet[static_cast<std::size_t>(k)];
@@ -228,7 +250,7 @@ void run_comparison(const ComparisonJob& job, JobContext& ctx) {
       f.envelope_common_speeds = r.envelope_common_speeds;
       f.comparison_seconds = seconds;
     }
-    p.values = f;
+    p.set_values(f);
     ctx.store_point(p);
   }
 }
@@ -243,7 +265,7 @@ nlohmann::json comparison_job_json(const ComparisonJob& j) {
   r["reference"] = io::to_json(j.feet.front());
   r["feet"] = nlohmann::json::array();
   for (std::size_t k = 1; k < j.feet.size(); ++k) r["feet"].push_back(io::to_json(j.feet[k]));
-  r["continuation"] = sweep_fields_json(j.sweeps);
+  r["continuation"] = sweep_continuation_json(j.sweep);
   return r;
 }
 
@@ -253,7 +275,7 @@ JobCost comparison_cost(const ComparisonJob& j) {
   for (const foot::FootSpec& f : j.feet) {
     WalkerJob w = j.walker;
     w.foot = f;
-    const JobCost c = walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.sweeps.seed_speeds.size()));
+    const JobCost c = walker_job_cost(w, "sweep", static_cast<int>(w.speeds.size()), static_cast<int>(j.sweep.seed_speeds.size()));
     total.seconds += c.seconds;
     total.memory_bytes = std::max(total.memory_bytes, c.memory_bytes);
     total.field = c.field;

@@ -1,22 +1,52 @@
-#include "cyclopt/jobs/foot/foot_design_kind.hpp"
-
+// Job kind "foot_design" (scene walker; issue 15 item 3, seed 001 section 10.2): the foot-geometry
+// optimisation of studies/foot_design.hpp as a job. Per density of a list, a multistart at the
+// design speed with foot and gait free from the start foot, the best admissible design, its
+// free-foot continuation over the speeds (an optimal foot per speed, Fig. 10.2a), the fixed-foot
+// sweeps of the designs optimal at the highest and the lowest speed, and their savings against
+// the start foot and point feet.
+//
+//   {"scene": "walker", "task": "foot_design", "foot": "P2-shoes-left-HMT", "speeds": "0.3:0.1:2.3",
+//    "densities": "10:10:70", "design_speed": 2.3, "multistart": {"starts": 20}, "sweep_starts": 20}
+//
+// foot: the start foot, HM or HMT (default P2-shoes-left-HMT), also the start-foot reference with
+// its own masses; densities (kg/m^2, default 10:10:70); design_speed (m/s, one of the speeds,
+// default 2.3); speeds (default 0.3:0.1:2.3); multistart: starts (default 20), seed and scale of
+// the design multistart, seed and scale of the sweeps too; sweep_starts: multistart runs per seed
+// speed of every fixed-foot sweep (default 20); foot_scale: the spread of the feet the design
+// starts draw around the start foot (studies::FootDesignOptions::foot_scale, default 1, 0: none);
+// free_parameters: the foot parameters designed
+// (default all of the model's; only foot parameters); design_bounds: (10.1) (walker/design_bounds_spec.hpp,
+// default the seed's); references: sweep the start foot and point feet (default true; false: no
+// savings); continuation: seed_speeds and min_trust_region of the sweeps and the continuation;
+// points, bezier_degree, quadrature, objective, solver as for a sweep. Bad densities, bounds that
+// exclude the start foot in a fixed parameter, a parameter the foot model does not have and a
+// design speed off the grid are refused at submission, naming the field.
+//
+// Stored (records/foot_design_records.hpp): curve 0 one point per density (a DesignedFootRecord;
+// status "no admissible design" where the multistart found none), curves 1, 2 the best point per
+// speed of the start foot and point feet, per density k: curve 3 + 4k the multistart's optima
+// (every class kept), 4 + 4k the free-foot continuation's points, 5 + 4k and 6 + 4k the best point
+// per speed of the fixed-foot sweeps of the high- and low-speed designs. Each is stored when its
+// phase ends; a resumed job replays the finished solves and runs from its checkpoints
+// (walker/sweep_checkpoints.hpp) instead of solving them again.
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
-#include "cyclopt/records/foot_design_records.hpp"
-#include "cyclopt/jobs/walker/foot_sweep_points.hpp"
-#include "cyclopt/studies/optimum_sensitivities.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/jobs/solver_progress.hpp"
-#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/jobs/walker/continuation_fields.hpp"
+#include "cyclopt/jobs/walker/foot_sweep_points.hpp"
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
-#include "cyclopt/jobs/walker/sweep_fields.hpp"
-#include "cyclopt/service/unit_job_context.hpp"
-#include "cyclopt/service/value_range.hpp"
 #include "cyclopt/jobs/walker/walker_job_cost.hpp"
 #include "cyclopt/jobs/walker/walker_job_json.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
 #include "cyclopt/jobs/walker/walker_points.hpp"
 #include "cyclopt/jobs/walker/walker_records.hpp"
+#include "cyclopt/records/foot_design_records.hpp"
+#include "cyclopt/service/spec_fields.hpp"
+#include "cyclopt/service/unit_job_context.hpp"
+#include "cyclopt/service/value_range.hpp"
 #include "cyclopt/studies/foot_design.hpp"
+#include "cyclopt/studies/optimum_sensitivities.hpp"
 #include "cyclopt/studies/walker_family.hpp"
 
 #include <algorithm>
@@ -34,17 +64,16 @@ constexpr const char* kDefaultStartFoot = "P2-shoes-left-HMT";  // seed 001 sect
 constexpr const char* kDefaultSpeeds = "0.3:0.1:2.3";
 constexpr const char* kDefaultDensities = "10:10:70";             // kg/m^2
 constexpr double kDefaultDesignSpeed = 2.3;                        // m/s, the highest of the grid
+constexpr int kDefaultSweepStarts = 20;
 
 struct DesignJob {
   WalkerJob walker;           // walker.foot: the start foot moved into (10.1); problem: foot free under (10.1)
   foot::FootSpec start_foot;  // as given: the start of every design and the start-foot reference
-  std::vector<double> densities;
-  double design_speed = kDefaultDesignSpeed;
-  bool references = true;
-  int sweep_starts = 20;
-  double foot_scale = studies::FootDesignOptions{}.foot_scale;  // design starts' drawn feet
-  SweepFields sweeps;
-  std::vector<studies::KnownDesign> known_designs;  // further design starts (studies::KnownDesign)
+  // The study's options, filled from the spec (the job's observers are attached when it runs):
+  // densities, design speed, the design multistart's starts, seed and scale, foot_scale, the
+  // bounds and free parameters of walker.problem, references, known designs, and the sweeps'
+  // options (their starts: sweep_starts).
+  studies::FootDesignOptions design;
 };
 
 std::string number_text(double x) {
@@ -86,30 +115,44 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
   if (!walker.contains("design_bounds")) walker["design_bounds"] = nlohmann::json::object();  // the seed's (10.1)
   j.walker = parse_walker_job(walker, common_fields, true);
   if (j.walker.speeds.size() < 2) throw SpecError("speeds", "needs at least two values");
+  studies::FootDesignOptions& design = j.design;
+  design.starts = j.walker.starts;
+  design.seed = j.walker.seeds.front();  // the design multistart's; the sweeps search once per seed
+  design.scale = j.walker.scale;
+  design.bounds = *j.walker.problem.design_bounds;
+  design.free_parameters = j.walker.problem.free_parameters;
+  design.constants = j.walker.constants;
 
-  j.densities = parse_value_range(spec.contains("densities") ? spec["densities"] : nlohmann::json(kDefaultDensities),
-                                  "densities", foot::kMinDensity, foot::kMaxDensity);
-  for (std::size_t i = 1; i < j.densities.size(); ++i)
-    if (std::find(j.densities.begin(), j.densities.begin() + static_cast<std::ptrdiff_t>(i), j.densities[i]) !=
-        j.densities.begin() + static_cast<std::ptrdiff_t>(i))
-      throw SpecError("densities[" + std::to_string(i) + "]", "= " + number_text(j.densities[i]) + " kg/m^2 is listed twice");
-  if (j.densities.size() > 100) throw SpecError("densities", "at most 100 densities");
-  if (spec.contains("design_speed"))
-    j.design_speed = number_value(spec["design_speed"], "design_speed", kMinWalkingSpeed, kMaxWalkingSpeed);
+  std::vector<double>& densities = design.densities;
+  densities = parse_value_range(spec.contains("densities") ? spec["densities"] : nlohmann::json(kDefaultDensities),
+                                "densities", foot::kMinDensity, foot::kMaxDensity);
+  for (std::size_t i = 1; i < densities.size(); ++i)
+    if (std::find(densities.begin(), densities.begin() + static_cast<std::ptrdiff_t>(i), densities[i]) !=
+        densities.begin() + static_cast<std::ptrdiff_t>(i))
+      throw SpecError("densities[" + std::to_string(i) + "]", "= " + number_text(densities[i]) + " kg/m^2 is listed twice");
+  if (densities.size() > 100) throw SpecError("densities", "at most 100 densities");
+  design.design_speed = spec.contains("design_speed")
+                            ? number_value(spec["design_speed"], "design_speed", kMinWalkingSpeed, kMaxWalkingSpeed)
+                            : kDefaultDesignSpeed;
   const auto on_grid = std::find_if(j.walker.speeds.begin(), j.walker.speeds.end(),
-                                    [&](double v) { return std::abs(v - j.design_speed) <= 1e-9; });
+                                    [&](double v) { return std::abs(v - design.design_speed) <= 1e-9; });
   if (on_grid == j.walker.speeds.end())
-    throw SpecError("design_speed", "= " + number_text(j.design_speed) + " m/s is not one of the speeds (" +
+    throw SpecError("design_speed", "= " + number_text(design.design_speed) + " m/s is not one of the speeds (" +
                                         number_text(j.walker.speeds.front()) + " .. " +
                                         number_text(j.walker.speeds.back()) + "); admissible: a value of the grid");
-  j.design_speed = *on_grid;  // exactly the grid's value
+  design.design_speed = *on_grid;  // exactly the grid's value
   if (spec.contains("references")) {
     if (!spec["references"].is_boolean()) throw SpecError("references", "must be true or false");
-    j.references = spec["references"].get<bool>();
+    design.references = spec["references"].get<bool>();
   }
-  j.sweep_starts = optional_integer(spec, "", "sweep_starts", 1, 1000).value_or(j.sweep_starts);
-  j.foot_scale = optional_number(spec, "", "foot_scale", 0.0, 3.0).value_or(j.foot_scale);
-  j.sweeps = parse_sweep_fields(spec);
+  design.sweep.starts = optional_integer(spec, "", "sweep_starts", 1, 1000).value_or(kDefaultSweepStarts);
+  design.foot_scale = optional_number(spec, "", "foot_scale", 0.0, 3.0).value_or(design.foot_scale);
+  studies::SpeedSweepOptions& sweep = design.sweep;
+  sweep.speeds = j.walker.speeds;
+  sweep.seeds = j.walker.seeds;  // the sweeps search once per seed
+  sweep.scale = j.walker.scale;
+  sweep.continuation.corrector = j.walker.solver;
+  parse_sweep_continuation(spec, sweep);
   if (spec.contains("known_designs")) {
     const nlohmann::json& k = spec["known_designs"];
     if (!k.is_array() || k.size() > 100) throw SpecError("known_designs", "must be an array of at most 100 {density, z} objects");
@@ -123,7 +166,7 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
       studies::KnownDesign known;
       if (!d.contains("density")) throw SpecError(field + ".density", "is required (one of densities)");
       known.density = number_value(d["density"], field + ".density", foot::kMinDensity, foot::kMaxDensity);
-      if (std::find(j.densities.begin(), j.densities.end(), known.density) == j.densities.end())
+      if (std::find(design.densities.begin(), design.densities.end(), known.density) == design.densities.end())
         throw SpecError(field + ".density", "= " + number_text(known.density) + " kg/m^2 is not one of densities");
       if (!d.contains("z") || !d["z"].is_array() || static_cast<int>(d["z"].size()) != n)
         throw SpecError(field + ".z", "must be an array of " + std::to_string(n) + " numbers: the " + std::to_string(gait) +
@@ -132,7 +175,7 @@ DesignJob parse_design_job(const nlohmann::json& spec, const CommonJobFields& co
       known.z.resize(n);
       for (int m = 0; m < n; ++m)
         known.z[m] = number_value(d["z"][static_cast<std::size_t>(m)], field + ".z[" + std::to_string(m) + "]", -100.0, 100.0);
-      j.known_designs.push_back(std::move(known));
+      design.known_designs.push_back(std::move(known));
     }
   }
   return j;
@@ -171,17 +214,17 @@ constexpr const char* kReferenceUnits[] = {"start-foot", "point-feet"};
 
 std::vector<WorkUnit> design_units(const DesignJob& job) {
   std::vector<WorkUnit> units;
-  if (job.references)
+  if (job.design.references)
     for (int i = 0; i < kFirstDensityUnit; ++i) units.push_back({kReferenceUnits[i], i});
-  for (std::size_t k = 0; k < job.densities.size(); ++k)
+  for (std::size_t k = 0; k < job.design.densities.size(); ++k)
     units.push_back({"density-" + std::to_string(k), kFirstDensityUnit + static_cast<int>(k)});
   return units;
 }
 
 int total_points(const DesignJob& job) {
-  const int n = static_cast<int>(job.densities.size());
+  const int n = static_cast<int>(job.design.densities.size());
   const int speeds = static_cast<int>(job.walker.speeds.size());
-  return n + (job.references ? 2 * speeds : 0) + 2 * n * speeds;
+  return n + (job.design.references ? 2 * speeds : 0) + 2 * n * speeds;
 }
 
 // One work unit of the study, computed against its unit's context.
@@ -200,7 +243,7 @@ class DesignUnit {
     if (ctx_.store_point(p)) ++stored_;  // a resumed job's replayed phases find their points stored
   }
   void store_sweep(int curve, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
-    for (const storage::SolutionPoint& p : best_points(studies::walker_family(model, base_, "speed"), s, curve)) store(p);
+    for (const ComparedSpeedPoint& p : best_points(studies::walker_family(model, base_, "speed"), s, curve)) store(p.stored());
   }
   studies::FootDesignOptions options(PhaseProgress& progress);
   void store_multistart(int k, const studies::DensityDesign& d);
@@ -229,8 +272,8 @@ void DesignUnit::store_multistart(int k, const studies::DensityDesign& d) {
     opt.z = m.z;
     opt.gait = shape.gait_at(m.z);
     opt.start = "design multistart run " + std::to_string(m.starts.front());
-    storage::SolutionPoint p = point_of(opt, {records::design_multistart_curve(k), static_cast<int>(i)}, static_cast<double>(i + 1));
-    p.required = false;  // every optimum is kept; the density's record (curve 0) is what was asked for
+    WalkerPoint p = walker_point(opt, {records::design_multistart_curve(k), static_cast<int>(i)}, static_cast<double>(i + 1));
+    p.row.required = false;  // every optimum is kept; the density's record (curve 0) is what was asked for
     records::DesignPointRecord r;
     r.density = d.density;
     r.foot = designed_foot(shape.model_at(m.z));
@@ -239,8 +282,7 @@ void DesignUnit::store_multistart(int k, const studies::DensityDesign& d) {
     r.class_reason = m.classification.reason;
     r.reached_by_starts = m.starts;
     r.design = static_cast<int>(i) == d.best;
-    p.values.update(nlohmann::json(r));
-    store(p);
+    store(p.stored(r));
   }
 }
 
@@ -248,15 +290,14 @@ void DesignUnit::store_free_foot(int k, const studies::DensityDesign& d) {
   const continuation::ParametricProblem family = studies::walker_family(d.free_foot_model, d.free_foot_problem, "speed");
   for (std::size_t i = 0; i < d.free_foot.points.size(); ++i) {
     const continuation::CurvePoint& c = d.free_foot.points[i];
-    storage::SolutionPoint p = point_of(family, c, {records::free_foot_curve(k), static_cast<int>(i)});
-    p.required = false;  // the continuation may stop before the lowest speed (section 10.2)
+    WalkerPoint p = walker_point(family, c, {records::free_foot_curve(k), static_cast<int>(i)});
+    p.row.required = false;  // the continuation may stop before the lowest speed (section 10.2)
     records::DesignPointRecord r;
     r.density = d.density;
     walker::GaitProblemOptions at = d.free_foot_problem;
     at.speed = c.parameter;
     r.foot = designed_foot(walker::GaitProblem(d.free_foot_model, at).model_at(c.x));
-    p.values.update(nlohmann::json(r));
-    store(p);
+    store(p.stored(r));
   }
 }
 
@@ -324,19 +365,7 @@ bool DesignUnit::on_density(int k, const studies::DensityDesign& d, studies::Des
 }
 
 studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
-  studies::FootDesignOptions o;
-  o.densities = job_.densities;
-  o.design_speed = job_.design_speed;
-  o.starts = job_.walker.starts;
-  o.seed = job_.walker.seeds.front();  // the design multistart's; the sweeps search once per seed
-  o.scale = job_.walker.scale;
-  o.foot_scale = job_.foot_scale;
-  o.bounds = *job_.walker.problem.design_bounds;
-  o.free_parameters = job_.walker.problem.free_parameters;
-  o.references = job_.references;
-  o.known_designs = job_.known_designs;
-  o.constants = job_.walker.constants;
-  o.sweep = sweep_options(job_.walker, job_.sweeps, job_.sweep_starts);
+  studies::FootDesignOptions o = job_.design;
   o.journal = [this](const std::string& part) { return sweep_journal(ctx_, part + "/"); };
   // Progress: the step (density and phase) as the message, the sweep's or multistart's phase.
   o.sweep.continuation.corrector.on_iteration = progress.iterations();
@@ -380,11 +409,11 @@ void DesignUnit::run(const WorkUnit& unit) {
       return;
     }
     const int k = unit.index - kFirstDensityUnit;
-    if (k >= static_cast<int>(job_.densities.size()))
+    if (k >= static_cast<int>(job_.design.densities.size()))
       throw std::logic_error("foot_design: no density " + std::to_string(k) + " in the job");
     o.on_density = [this, k](const studies::DensityDesign& d, studies::DesignPhase phase) { return on_density(k, d, phase); };
     const studies::DensityDesign d =
-        studies::design_density(job_.densities[static_cast<std::size_t>(k)], job_.start_foot, base_, o);
+        studies::design_density(job_.design.densities[static_cast<std::size_t>(k)], job_.start_foot, base_, o);
     if (d.stopped || !running()) return;
     ctx_.store_checkpoint(kUnitResult, nlohmann::json{{"record", nlohmann::json(design_record(d))},
                                                       {"high", foot_sweep_to_json(d.high)},
@@ -411,13 +440,13 @@ DensityResult density_result(const nlohmann::json& j) {
 void run_design(const DesignJob& job, JobContext& ctx) {
   ctx.announce(total_points(job));
   ctx.add_curve(records::kDesignCurve, "designed foot per density", "density");
-  if (job.references) {
+  if (job.design.references) {
     ctx.add_curve(records::kStartFootCurve, "start foot " + job.start_foot.name + " (own masses)", "speed");
     ctx.add_curve(records::kPointFeetCurve, "point feet", "speed");
   }
-  for (std::size_t k = 0; k < job.densities.size(); ++k) {
+  for (std::size_t k = 0; k < job.design.densities.size(); ++k) {
     const int i = static_cast<int>(k);
-    const std::string rho = "rho " + number_text(job.densities[k]) + ": ";
+    const std::string rho = "rho " + number_text(job.design.densities[k]) + ": ";
     ctx.add_curve(records::design_multistart_curve(i), rho + "design multistart optima, best first", "rank");
     ctx.add_curve(records::free_foot_curve(i), rho + "free-foot continuation", "speed");
     ctx.add_curve(records::high_design_curve(i), rho + "fixed-foot sweep of the design", "speed");
@@ -451,7 +480,7 @@ void run_design(const DesignJob& job, JobContext& ctx) {
       p.objective = r.design_objective;
     else
       p.status = "no admissible design";
-    p.values = r;
+    p.set_values(r);
     ctx.store_point(p);
   }
 }
@@ -460,23 +489,23 @@ void run_design(const DesignJob& job, JobContext& ctx) {
 // continuation over the speeds below the design speed and two sweeps; the two reference sweeps.
 JobCost design_cost(const DesignJob& j) {
   const int speeds = static_cast<int>(j.walker.speeds.size());
-  const int seeds = static_cast<int>(j.sweeps.seed_speeds.size());
+  const int seeds = static_cast<int>(j.design.sweep.seed_speeds.size());
   const int below = static_cast<int>(std::count_if(j.walker.speeds.begin(), j.walker.speeds.end(),
-                                                   [&](double v) { return v < j.design_speed; }));
+                                                   [&](double v) { return v < j.design.design_speed; }));
   WalkerJob sweep = j.walker;
-  sweep.starts = j.sweep_starts;
+  sweep.starts = j.design.sweep.starts;
   const double multistart = walker_job_cost(j.walker, "multistart", 1, 0).seconds;
   const double continuation = walker_job_cost(j.walker, "continuation", below + 1, 0).seconds;
   const JobCost one_sweep = walker_job_cost(sweep, "sweep", speeds, seeds);
   const double density = multistart + continuation + 2.0 * one_sweep.seconds;
   JobCost c;
-  c.seconds = static_cast<double>(j.densities.size()) * density + (j.references ? 2.0 * one_sweep.seconds : 0.0);
+  c.seconds = static_cast<double>(j.design.densities.size()) * density + (j.design.references ? 2.0 * one_sweep.seconds : 0.0);
   c.memory_bytes = std::max(walker_job_cost(j.walker, "multistart", 1, 0).memory_bytes, one_sweep.memory_bytes);
   c.field = "densities";
-  c.breakdown = std::to_string(j.densities.size()) + " densities x (design multistart of " + std::to_string(j.walker.starts) +
+  c.breakdown = std::to_string(j.design.densities.size()) + " densities x (design multistart of " + std::to_string(j.walker.starts) +
                 " starts " + duration_text(multistart) + " + free-foot continuation " + duration_text(continuation) +
                 " + 2 fixed-foot sweeps of " + duration_text(one_sweep.seconds) + ")" +
-                (j.references ? " + 2 reference sweeps" : "");
+                (j.design.references ? " + 2 reference sweeps" : "");
   return c;
 }
 
@@ -487,16 +516,16 @@ nlohmann::json design_job_json(const DesignJob& j) {
   nlohmann::json r = walker_job_json(j.walker, true, true);
   records::WalkerSetupRecord setup = walker_setup(j.walker);  // with the start foot as given
   setup.foot = io::to_json(j.start_foot);
-  setup.design_speed = j.design_speed;
+  setup.design_speed = j.design.design_speed;
   r.update(nlohmann::json(setup));
-  r["densities"] = j.densities;
-  r["references"] = j.references;
-  r["sweep_starts"] = j.sweep_starts;
-  r["foot_scale"] = j.foot_scale;
-  r["continuation"] = sweep_fields_json(j.sweeps);
-  if (!j.known_designs.empty()) {
+  r["densities"] = j.design.densities;
+  r["references"] = j.design.references;
+  r["sweep_starts"] = j.design.sweep.starts;
+  r["foot_scale"] = j.design.foot_scale;
+  r["continuation"] = sweep_continuation_json(j.design.sweep);
+  if (!j.design.known_designs.empty()) {
     r["known_designs"] = nlohmann::json::array();
-    for (const studies::KnownDesign& k : j.known_designs)
+    for (const studies::KnownDesign& k : j.design.known_designs)
       r["known_designs"].push_back({{"density", k.density}, {"z", std::vector<double>(k.z.data(), k.z.data() + k.z.size())}});
   }
   return r;

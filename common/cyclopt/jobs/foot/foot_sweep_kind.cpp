@@ -1,11 +1,25 @@
-#include "cyclopt/jobs/foot/foot_sweep_kind.hpp"
-
+// Job kind "foot_sweep" (scene walker): the foot's mass properties (seed 001,
+// appendix E) and its rolling kinematics over a grid of one foot parameter. Cheap, so the whole
+// service can be exercised end-to-end before the walker optimisation kinds exist.
+//
+//   {"scene": "walker", "task": "foot_sweep",
+//    "foot": "P2-shoes-left-HMT" | {foot spec, proto/schemas/foot.schema.json},
+//    "sweep": {"parameter": "density" | a parameter of the foot model (e.g. "k_HM"),
+//              "values": "lo:step:hi" | number | [numbers]},
+//    "samples": 2..200 rolling-kinematics samples stored as each point's trajectory (default 13),
+//    "point_delay_ms": 0..10000 extra wall time per point (default 0; for resume tests)}
+//
+// Every grid value must give a valid foot (checked by validate()); without a density in the
+// foot, 36.9 kg/m^2 is used (seed 001, section 10.2). Each point (curve 0, point i) stores the
+// foot's mass properties and admissible angles (records::FootMassRecord), objective = mass (kg),
+// and the rolling samples as its trajectory (records::FootRollingRecord).
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_report.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/jobs/foot/foot_kinds.hpp"
+#include "cyclopt/records/foot_sweep_records.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
-#include "cyclopt/jobs/walker/walker_job_spec.hpp"
 
 #include <chrono>
 #include <thread>
@@ -15,6 +29,9 @@ namespace cyclopt::jobs {
 using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
 
 namespace {
+
+constexpr double kDefaultFootDensity = 36.9;  // kg/m^2
+constexpr int kMaxPointDelayMs = 10000;
 
 struct FootSweep {
   foot::FootSpec base;
@@ -89,16 +106,18 @@ void run(const FootSweep& s, JobContext& ctx) {
     delay(s.point_delay_ms, ctx);
     if (ctx.stop_reason() != StopReason::none) return;
     const nlohmann::json report = io::foot_report(foot_at(s, s.values[i]), {.samples = s.samples});
+    nlohmann::json mass = report["mass_properties"];
+    mass["theta_min"] = report["admissible_theta"][0];
+    mass["theta_max"] = report["admissible_theta"][1];
+    const auto values = mass.get<records::FootMassRecord>();
     storage::SolutionPoint p;
     p.key = {0, i};
     p.parameter = s.values[i];
-    p.values = report["mass_properties"];
-    p.values["theta_min"] = report["admissible_theta"][0];
-    p.values["theta_max"] = report["admissible_theta"][1];
-    p.objective = p.values["mass"].get<double>();
+    p.set_values(values);
+    p.objective = values.mass;
     p.constraint_violation = 0.0;
     p.iterations = 1;
-    p.trajectory = report["rolling"];
+    p.set_trajectory(report["rolling"].get<records::FootRollingRecord>());
     ctx.count_iterations(1);
     if (ctx.store_point(p)) ++stored;
     ctx.report_progress({.iteration = 1,

@@ -1,15 +1,33 @@
-#include "cyclopt/jobs/walker/sensitivity_kind.hpp"
+// The walker job kind "sensitivity" (issue 15 item 6; seed 001 section 10.1, Fig. 10.1): an
+// optimal gait at one speed (from the automatic or a stored start, like optimise), stored with
+// its KKT sensitivities (studies/optimum_sensitivities.hpp), then per parameter the +-relative_range
+// continuation of studies/sensitivity.hpp from that optimum, its points stored, and one summary
+// (records::SensitivitySummaryRecord) comparing the KKT linear prediction with it. Fields beside
+// the walker ones of optimise (walker_job_spec.hpp):
+//   "parameters": model parameter names (default: every parameter kkt_sensitivity covers whose
+//                 value is not 0), "relative_range": in (0, 1) (default 0.1 = +-10 %),
+//   "steps": continuation values per direction, [1, 50] (default 5).
+//
+// The verdict per parameter: "continuation stopped: <message>" when a direction did not reach
+// the range; else "kink: <reasons>" when the KKT point flags a kink at p (weakly active rows), the
+// predicted active-set change on a side is nearer than the range (the linear prediction holds
+// only up to there), the continuation jumped to another curve, or the one-sided difference
+// quotients at its smallest step h = range / steps do not bracket the KKT derivative; else
+// "agrees". Bracketing, in units of the relative sensitivity s = p / f* df*/dp: for a smooth
+// f*(p), q(+h) and q(-h) differ from df*/dp by the curvature term +-f'' h p / 2, on opposite sides,
+// so s must lie in [min(s-, s+), max(s-, s+)] widened by kQuotientTolerance.
 
-#include "cyclopt/records/sensitivity_records.hpp"
-#include "cyclopt/studies/optimum_sensitivities.hpp"
 #include "cyclopt/jobs/solver_progress.hpp"
-#include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/jobs/walker/walker_job_cost.hpp"
 #include "cyclopt/jobs/walker/walker_job_json.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
+#include "cyclopt/jobs/walker/walker_kinds.hpp"
 #include "cyclopt/jobs/walker/walker_points.hpp"
 #include "cyclopt/jobs/walker/walker_records.hpp"
+#include "cyclopt/records/sensitivity_records.hpp"
+#include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/studies/kkt_sensitivity.hpp"
+#include "cyclopt/studies/optimum_sensitivities.hpp"
 #include "cyclopt/studies/sensitivity.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
 
@@ -20,22 +38,22 @@
 namespace cyclopt::jobs {
 
 using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
+
 namespace {
 
 using records::ParameterSensitivityRecord;
 using records::SensitivitySummaryRecord;
 
+// The widening of the bracket: 2 % of |s| plus 1e-4 (absolute, relative sensitivity units).
+constexpr double kQuotientRelativeTolerance = 0.02, kQuotientAbsoluteTolerance = 1e-4;
+
 struct SensitivityJob {
   WalkerJob walker;
-  std::vector<std::string> parameters;
-  double relative_range = 0.1;  // seed 001 section 10.1: +-10 %
-  int steps = 5;
+  // The study's options (seed 001 section 10.1: +-10 %): parameters, range, steps; the spec's
+  // solver as the corrector. The job's observers are attached when it runs.
+  studies::SensitivityOptions sensitivity;
 
-  walker::GaitProblemOptions problem() const {
-    walker::GaitProblemOptions o = walker.problem;
-    o.speed = walker.speeds.front();
-    return o;
-  }
+  walker::GaitProblemOptions problem() const { return walker.problem_at(walker.speeds.front()); }
 };
 
 std::string percent(double relative) {
@@ -65,6 +83,7 @@ SensitivityJob parse_sensitivity_job(const nlohmann::json& spec, const CommonJob
   nlohmann::json walker = spec;
   for (const char* key : {"parameters", "relative_range", "steps"}) walker.erase(key);
   j.walker = parse_walker_job(walker, common, false);
+  j.sensitivity.continuation.corrector = j.walker.solver;
   const std::vector<std::string> admissible = admissible_parameters(j.walker.model(), j.problem());
   if (spec.contains("parameters")) {
     const nlohmann::json& p = spec["parameters"];
@@ -75,41 +94,41 @@ SensitivityJob parse_sensitivity_job(const nlohmann::json& spec, const CommonJob
       if (!p[i].is_string() || std::find(admissible.begin(), admissible.end(), p[i].get<std::string>()) == admissible.end())
         throw SpecError(field, p[i].dump() + " is not a parameter with a sensitivity in this model (free, derived from "
                                "the density, or 0); admissible: " + join(admissible));
-      if (std::find(j.parameters.begin(), j.parameters.end(), p[i].get<std::string>()) != j.parameters.end())
+      if (std::find(j.sensitivity.parameters.begin(), j.sensitivity.parameters.end(), p[i].get<std::string>()) != j.sensitivity.parameters.end())
         throw SpecError(field, p[i].dump() + " is listed twice");
-      j.parameters.push_back(p[i].get<std::string>());
+      j.sensitivity.parameters.push_back(p[i].get<std::string>());
     }
   } else {
-    j.parameters = admissible;
+    j.sensitivity.parameters = admissible;
   }
   if (spec.contains("relative_range")) {
     const nlohmann::json& r = spec["relative_range"];
     if (!r.is_number() || !(r.get<double>() > 0.0 && r.get<double>() < 1.0))
       throw SpecError("relative_range", "must be a number in (0, 1) (0.1: +-10 % as in seed 001 section 10.1), got " + r.dump());
-    j.relative_range = r.get<double>();
+    j.sensitivity.relative_range = r.get<double>();
   }
-  j.steps = optional_integer(spec, "", "steps", 1, 50).value_or(j.steps);
+  j.sensitivity.steps = optional_integer(spec, "", "steps", 1, 50).value_or(j.sensitivity.steps);
   return j;
 }
 
 nlohmann::json sensitivity_job_json(const SensitivityJob& j) {
   nlohmann::json r = walker_job_json(j.walker, false, false);
-  r["parameters"] = j.parameters;
-  r["relative_range"] = j.relative_range;
-  r["steps"] = j.steps;
+  r["parameters"] = j.sensitivity.parameters;
+  r["relative_range"] = j.sensitivity.relative_range;
+  r["steps"] = j.sensitivity.steps;
   return r;
 }
 
 // One optimise plus, per parameter, a continuation over 2 (steps + 1) values.
 JobCost sensitivity_cost(const SensitivityJob& j) {
   const JobCost optimise = walker_job_cost(j.walker, "optimise", 1, 0);
-  const JobCost one = walker_job_cost(j.walker, "continuation", 2 * (j.steps + 1), 0);
+  const JobCost one = walker_job_cost(j.walker, "continuation", 2 * (j.sensitivity.steps + 1), 0);
   JobCost c = optimise;
-  c.seconds = optimise.seconds + static_cast<double>(j.parameters.size()) * one.seconds;
+  c.seconds = optimise.seconds + static_cast<double>(j.sensitivity.parameters.size()) * one.seconds;
   c.memory_bytes = std::max(optimise.memory_bytes, one.memory_bytes);
   c.field = "parameters";
-  c.breakdown = "optimise " + duration_text(optimise.seconds) + " + " + std::to_string(j.parameters.size()) +
-                " parameters x continuation of " + std::to_string(2 * (j.steps + 1)) + " values " + duration_text(one.seconds);
+  c.breakdown = "optimise " + duration_text(optimise.seconds) + " + " + std::to_string(j.sensitivity.parameters.size()) +
+                " parameters x continuation of " + std::to_string(2 * (j.sensitivity.steps + 1)) + " values " + duration_text(one.seconds);
   return c;
 }
 
@@ -188,15 +207,15 @@ SensitivitySummaryRecord compare(const ParameterSensitivityRecord* k, double obj
 }
 
 void run_sensitivity(const SensitivityJob& job, JobContext& ctx) {
-  const int n = static_cast<int>(job.parameters.size());
+  const int n = static_cast<int>(job.sensitivity.parameters.size());
   const double v = job.walker.speeds.front();
   ctx.announce(1 + n);
   ctx.add_curve(records::kSensitivityOptimumCurve, "optimal gait", "speed");
-  ctx.add_curve(records::kSensitivitySummaryCurve, "KKT sensitivity against the " + percent(job.relative_range) +
+  ctx.add_curve(records::kSensitivitySummaryCurve, "KKT sensitivity against the " + percent(job.sensitivity.relative_range) +
                                                        " continuation, per parameter", "parameter index");
   for (int k = 0; k < n; ++k)
-    ctx.add_curve(records::sensitivity_continuation_curve(k), job.parameters[static_cast<std::size_t>(k)] + ": continuation",
-                  "relative change of " + job.parameters[static_cast<std::size_t>(k)]);
+    ctx.add_curve(records::sensitivity_continuation_curve(k), job.sensitivity.parameters[static_cast<std::size_t>(k)] + ": continuation",
+                  "relative change of " + job.sensitivity.parameters[static_cast<std::size_t>(k)]);
   const std::set<storage::PointKey> stored = ctx.already_stored_points();
   int done = 0;
   for (int k = 0; k < n; ++k) done += static_cast<int>(stored.count({records::kSensitivitySummaryCurve, k}));
@@ -212,12 +231,12 @@ void run_sensitivity(const SensitivityJob& job, JobContext& ctx) {
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.report_progress({.parameter = v, .curve_id = 0, .points_done = done, .points_total = 1 + n,
                        .message = "KKT sensitivities of " + std::to_string(n) + " parameters"});
-  const std::optional<records::KktSensitivitiesRecord> kkt = sensitivities_record(studies::optimum_sensitivities(model, po, opt, job.parameters, stop_predicate(ctx)));
+  const std::optional<records::KktSensitivitiesRecord> kkt = sensitivities_record(studies::optimum_sensitivities(model, po, opt, job.sensitivity.parameters, stop_predicate(ctx)));
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.store_point(point_of(opt, {records::kSensitivityOptimumCurve, 0}, v, kkt));
   const bool converged = opt.summary.termination == nlp::Termination::converged;
   for (int k = 0; k < n; ++k) {
-    const std::string& name = job.parameters[static_cast<std::size_t>(k)];
+    const std::string& name = job.sensitivity.parameters[static_cast<std::size_t>(k)];
     if (stored.count({records::kSensitivitySummaryCurve, k})) continue;
     storage::SolutionPoint summary;
     summary.key = {records::kSensitivitySummaryCurve, k};
@@ -225,23 +244,20 @@ void run_sensitivity(const SensitivityJob& job, JobContext& ctx) {
     if (!converged) {
       SensitivitySummaryRecord s;
       s.parameter = name;
-      s.relative_range = job.relative_range;
+      s.relative_range = job.sensitivity.relative_range;
       s.verdict = std::string("not computed: the optimisation ended ") + nlp::to_string(opt.summary.termination);
       summary.status = "no optimum";
-      summary.values = s;
+      summary.set_values(s);
       ctx.store_point(summary);
       continue;
     }
     ctx.report_progress({.parameter = static_cast<double>(k), .curve_id = records::sensitivity_continuation_curve(k),
                          .points_done = done, .points_total = 1 + n,
                          .message = name + " (" + std::to_string(k + 1) + "/" + std::to_string(n) + "): " +
-                                    percent(job.relative_range).substr(1) + " continuation in " + std::to_string(job.steps) +
+                                    percent(job.sensitivity.relative_range).substr(1) + " continuation in " + std::to_string(job.sensitivity.steps) +
                                     " steps each way"});
-    studies::SensitivityOptions so;
+    studies::SensitivityOptions so = job.sensitivity;
     so.parameters = {name};
-    so.relative_range = job.relative_range;
-    so.steps = job.steps;
-    so.continuation.corrector = job.walker.solver;
     so.continuation.corrector.on_iteration = solver_progress(
         ctx, {.parameter = static_cast<double>(k), .curve_id = records::sensitivity_continuation_curve(k), .points_done = done,
               .points_total = 1 + n, .message = name + ": continuation"});
@@ -256,22 +272,22 @@ void run_sensitivity(const SensitivityJob& job, JobContext& ctx) {
       sp.objective = opt.summary.objective + p.delta_objective;
       sp.status = "ok";
       sp.required = false;  // the continuation may stop before the range; the summary says so
-      sp.values = records::SensitivityStepRecord{.parameter = name,
+      sp.set_values(records::SensitivityStepRecord{.parameter = name,
                                                  .value = curve.base_value * (1.0 + p.relative_change),
                                                  .relative_change = p.relative_change,
                                                  .delta_objective = p.delta_objective,
-                                                 .curve_id = p.curve_id};
+                                                 .curve_id = p.curve_id});
       ctx.store_point(sp);
     }
     const ParameterSensitivityRecord* ks = nullptr;
     if (kkt && !kkt->unavailable)
       for (const ParameterSensitivityRecord& r : kkt->parameters)
         if (r.name == name) ks = &r;
-    const SensitivitySummaryRecord s = compare(ks, opt.summary.objective, curve, job.relative_range, job.steps,
+    const SensitivitySummaryRecord s = compare(ks, opt.summary.objective, curve, job.sensitivity.relative_range, job.sensitivity.steps,
                                                kkt ? kkt->unavailable : std::nullopt);
     // The comparison counts as a solution when both sides reached the range (agrees or kink).
     summary.status = s.verdict == "agrees" || s.verdict.rfind("kink", 0) == 0 ? "ok" : "incomplete";
-    summary.values = s;
+    summary.set_values(s);
     ctx.store_point(summary);
     ++done;
   }
@@ -279,7 +295,7 @@ void run_sensitivity(const SensitivityJob& job, JobContext& ctx) {
 
 }  // namespace
 
-JobKind walker_sensitivity_kind() {
+JobKind sensitivity_kind() {
   std::vector<std::string> fields = walker_job_fields(false);
   fields.erase(std::remove(fields.begin(), fields.end(), "multistart"), fields.end());
   fields.insert(fields.end(), {"parameters", "relative_range", "steps"});

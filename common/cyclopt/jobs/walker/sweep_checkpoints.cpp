@@ -1,5 +1,8 @@
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
 
+#include "cyclopt/jobs/walker/walker_records.hpp"
+#include "cyclopt/records/walker_point_record.hpp"
+
 #include <cmath>
 #include <limits>
 #include <map>
@@ -18,16 +21,22 @@ using nlohmann::json;
 // NaN and infinities have no JSON form: stored as null, read back as NaN.
 double number(const json& j) { return j.is_null() ? std::numeric_limits<double>::quiet_NaN() : j.get<double>(); }
 
-json vector_to_json(const Eigen::VectorXd& v) {
-  json a = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
-  return a;
+std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+Eigen::VectorXd vector_of(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
 Eigen::VectorXd vector_from_json(const json& a) {
   Eigen::VectorXd v(static_cast<Eigen::Index>(a.size()));
   for (std::size_t i = 0; i < a.size(); ++i) v[static_cast<Eigen::Index>(i)] = number(a.at(i));
   return v;
+}
+
+nlp::Termination termination_named(const std::string& name) {
+  for (int t = 0; t <= static_cast<int>(nlp::Termination::stalled); ++t)
+    if (name == nlp::to_string(static_cast<nlp::Termination>(t))) return static_cast<nlp::Termination>(t);
+  throw records::RecordError("solver.termination: no termination is called '" + name + "'");
 }
 
 // Parses one checkpoint; nullopt (computed again) when it is missing or unreadable.
@@ -40,7 +49,7 @@ std::optional<T> find(const std::map<std::string, std::string>& stored, const st
   if (j.is_discarded()) return std::nullopt;
   try {
     return from_json(j);
-  } catch (const json::exception&) {
+  } catch (const std::exception&) {  // json::exception, records::RecordError, std::out_of_range
     return std::nullopt;
   }
 }
@@ -51,30 +60,36 @@ std::string solve_key(int batch, int start) {
 std::string run_key(int run) { return "run/" + std::to_string(run); }
 
 json curve_point_to_json(const continuation::CurvePoint& p) {
-  return {{"parameter", p.parameter},       {"curve_id", p.curve_id},
-          {"on_grid", p.on_grid},           {"converged", p.converged},
-          {"x", vector_to_json(p.x)},       {"objective", p.objective},
-          {"corrector", summary_to_json(p.corrector)},
-          {"predictor_attempts", p.predictor_attempts},
-          {"predictor_steps", p.predictor_steps},
-          {"kappa", p.kappa},               {"trust_region", p.trust_region},
-          {"seconds", p.seconds}};
+  json j = records::ContinuationStepRecord{.curve_id = p.curve_id,
+                                           .on_grid = p.on_grid,
+                                           .converged = p.converged,
+                                           .predictor_attempts = p.predictor_attempts,
+                                           .predictor_steps = p.predictor_steps,
+                                           .kappa = p.kappa,
+                                           .trust_region = p.trust_region,
+                                           .point_seconds = p.seconds};
+  j["parameter"] = p.parameter;
+  j["x"] = as_vector(p.x);
+  j["objective"] = p.objective;
+  j["corrector"] = summary_to_json(p.corrector);
+  return j;
 }
 
 continuation::CurvePoint curve_point_from_json(const json& j) {
+  const auto step = j.get<records::ContinuationStepRecord>();
   continuation::CurvePoint p;
   p.parameter = number(j.at("parameter"));
-  p.curve_id = j.at("curve_id").get<int>();
-  p.on_grid = j.at("on_grid").get<bool>();
-  p.converged = j.at("converged").get<bool>();
+  p.curve_id = step.curve_id;
+  p.on_grid = step.on_grid;
+  p.converged = step.converged;
   p.x = vector_from_json(j.at("x"));
   p.objective = number(j.at("objective"));
   p.corrector = summary_from_json(j.at("corrector"));
-  p.predictor_attempts = j.at("predictor_attempts").get<int>();
-  p.predictor_steps = j.at("predictor_steps").get<int>();
-  p.kappa = number(j.at("kappa"));
-  p.trust_region = number(j.at("trust_region"));
-  p.seconds = number(j.at("seconds"));
+  p.predictor_attempts = step.predictor_attempts;
+  p.predictor_steps = step.predictor_steps;
+  p.kappa = step.kappa;
+  p.trust_region = step.trust_region;
+  p.seconds = step.point_seconds;
   return p;
 }
 
@@ -109,41 +124,30 @@ studies::BestPoint best_from_json(const json& j) {
 }  // namespace
 
 json summary_to_json(const nlp::SolverSummary& s) {
-  return {{"termination", static_cast<int>(s.termination)},
-          {"message", s.message},
-          {"iterations", s.iterations},
-          {"function_evaluations", s.function_evaluations},
-          {"jacobian_evaluations", s.jacobian_evaluations},
-          {"failed_evaluations", s.failed_evaluations},
-          {"wall_seconds", s.wall_seconds},
-          {"objective", s.objective},
-          {"kkt_error", s.kkt_error},
-          {"constraint_violation", s.constraint_violation},
-          {"x", vector_to_json(s.x)},
-          {"equality_multipliers", vector_to_json(s.equality_multipliers)},
-          {"inequality_multipliers", vector_to_json(s.inequality_multipliers)},
-          {"bound_multipliers", vector_to_json(s.bound_multipliers)}};
+  records::SolverRecord r = solver_record(s);
+  r.equality_multipliers = as_vector(s.equality_multipliers);
+  r.inequality_multipliers = as_vector(s.inequality_multipliers);
+  r.bound_multipliers = as_vector(s.bound_multipliers);
+  return r;
 }
 
 nlp::SolverSummary summary_from_json(const json& j) {
+  const auto r = j.get<records::SolverRecord>();
   nlp::SolverSummary s;
-  const int t = j.at("termination").get<int>();
-  if (t < 0 || t > static_cast<int>(nlp::Termination::stalled))
-    throw json::other_error::create(501, "termination out of range", &j);
-  s.termination = static_cast<nlp::Termination>(t);
-  s.message = j.at("message").get<std::string>();
-  s.iterations = j.at("iterations").get<int>();
-  s.function_evaluations = j.at("function_evaluations").get<int>();
-  s.jacobian_evaluations = j.at("jacobian_evaluations").get<int>();
-  s.failed_evaluations = j.at("failed_evaluations").get<int>();
-  s.wall_seconds = number(j.at("wall_seconds"));
-  s.objective = number(j.at("objective"));
-  s.kkt_error = number(j.at("kkt_error"));
-  s.constraint_violation = number(j.at("constraint_violation"));
-  s.x = vector_from_json(j.at("x"));
-  s.equality_multipliers = vector_from_json(j.at("equality_multipliers"));
-  s.inequality_multipliers = vector_from_json(j.at("inequality_multipliers"));
-  s.bound_multipliers = vector_from_json(j.at("bound_multipliers"));
+  s.termination = termination_named(r.termination);
+  s.message = r.message;
+  s.iterations = r.iterations;
+  s.function_evaluations = r.function_evaluations;
+  s.jacobian_evaluations = r.jacobian_evaluations;
+  s.failed_evaluations = r.failed_evaluations;
+  s.wall_seconds = r.wall_seconds;
+  s.objective = r.objective;
+  s.kkt_error = r.kkt_error;
+  s.constraint_violation = r.constraint_violation;
+  s.x = vector_of(r.x);
+  s.equality_multipliers = vector_of(r.equality_multipliers);
+  s.inequality_multipliers = vector_of(r.inequality_multipliers);
+  s.bound_multipliers = vector_of(r.bound_multipliers);
   return s;
 }
 

@@ -7,7 +7,9 @@
 // The walker multistart job uses the same journal for its single batch (batch 0). A job of several
 // sweeps (foot_design_kind.hpp) gives each its own prefix: "<prefix>solve/...", "<prefix>run/...".
 // Values are JSON with every field, doubles in round-trip precision, so a replayed sweep takes the
-// same decisions as the uninterrupted one. An unreadable checkpoint is treated as absent.
+// same decisions as the uninterrupted one; a solver summary is written as the result contract's
+// records::SolverRecord with its multipliers, a curve point's step as records::ContinuationStepRecord.
+// An unreadable checkpoint is treated as absent.
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/studies/foot_comparison.hpp"
@@ -21,16 +23,16 @@ namespace cyclopt::jobs {
 studies::SweepJournal sweep_journal(service::JobContext& ctx, const std::string& prefix = "");
 
 nlohmann::json summary_to_json(const nlp::SolverSummary& s);
-nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws nlohmann::json::exception
+nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws records::RecordError
 nlohmann::json run_to_json(const continuation::ContinuationResult& r);
 continuation::ContinuationResult run_from_json(const nlohmann::json& j);
 
 // One foot's finished sweep reduced to its best point per speed (studies::FootSweepSummary): the
-// result a comparison's or a design's work unit leaves for its job (foot_comparison_kind.hpp,
-// foot_design_kind.hpp), read back to combine the units and by a resumed job instead of sweeping
+// result a comparison's or a design's work unit leaves for its job (foot/foot_comparison_kind.cpp,
+// foot/foot_design_kind.cpp), read back to combine the units and by a resumed job instead of sweeping
 // the foot again. Mean, saving and common speeds are not kept: summarise_feet computes them.
 nlohmann::json foot_sweep_to_json(const studies::FootSweepSummary& s);
-// Throws (nlohmann::json::exception, std::out_of_range) on a malformed value.
+// Throws (records::RecordError, nlohmann::json::exception, std::out_of_range) on a malformed value.
 studies::FootSweepSummary foot_sweep_from_json(const nlohmann::json& j);
 
 }  // namespace cyclopt::jobs

@@ -7,8 +7,8 @@
 // service_integration.txt) and the iteration counts of bench/results/multistart_bench.txt and
 // speed_sweep_bench.txt.
 
-#include "cyclopt/service/job_cost.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
+#include "cyclopt/service/job_cost.hpp"
 
 #include <string>
 

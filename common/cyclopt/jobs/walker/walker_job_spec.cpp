@@ -3,6 +3,8 @@
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/jobs/solver_fields.hpp"
 #include "cyclopt/jobs/walker/design_bounds_spec.hpp"
+#include "cyclopt/jobs/walker/walker_job_cost.hpp"
+#include "cyclopt/jobs/walker/walker_job_json.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/walker/model_parameters.hpp"
@@ -17,10 +19,6 @@ using namespace service;  // the job-kind infrastructure: JobKind, JobContext, t
 std::vector<std::string> walker_job_fields(bool sweep) {
   return {"foot", sweep ? "speeds" : "speed", "points", "bezier_degree", "quadrature", "positive_power_band",
           "free_parameters", "design_bounds", "start", "multistart"};
-}
-
-WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep) {
-  return parse_walker_job(spec, parse_common_job_fields(spec), sweep);
 }
 
 WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& common, bool sweep) {
@@ -99,6 +97,14 @@ WalkerJob parse_walker_job(const nlohmann::json& spec, const CommonJobFields& co
     job.scale = optional_number(m, "multistart", "scale", 1e-6, 1.0).value_or(job.scale);
   }
   return job;
+}
+
+JobKind one_speed_kind(const std::string& task, bool random_starts, std::function<void(const WalkerJob&, JobContext&)> run) {
+  return typed_job_kind<WalkerJob>(
+      task, {"walker"}, walker_job_fields(false),
+      [](const nlohmann::json& spec, const CommonJobFields& common) { return parse_walker_job(spec, common, false); },
+      std::move(run), [random_starts](const WalkerJob& job) { return walker_job_json(job, false, random_starts); },
+      [task](const WalkerJob& job) { return walker_job_cost(job, task, 1, 0); });
 }
 
 }  // namespace cyclopt::jobs

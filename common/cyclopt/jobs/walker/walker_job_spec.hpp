@@ -24,8 +24,9 @@
 // the seed's SQP with Table 6.2 (nlp::seed_table_6_2_options()); "solver" overrides it.
 
 #include "cyclopt/foot/foot_spec.hpp"
-#include "cyclopt/service/common_job_fields.hpp"
 #include "cyclopt/nlp/solver_options.hpp"
+#include "cyclopt/service/common_job_fields.hpp"
+#include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <nlohmann/json.hpp>
@@ -62,16 +63,26 @@ struct WalkerJob {
   double scale = 0.05;
 
   walker::WalkerModel<double> model() const { return walker::make_walker_model(foot, constants); }
+  // The problem at one speed.
+  walker::GaitProblemOptions problem_at(double speed) const {
+    walker::GaitProblemOptions o = problem;
+    o.speed = speed;
+    return o;
+  }
 };
 
 // Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed"; the
 // objective and the solver come from the parsed common fields. Throws SpecError naming the first
 // invalid field and its admissible range.
 WalkerJob parse_walker_job(const nlohmann::json& spec, const service::CommonJobFields& common, bool sweep);
-// The same for a whole stored spec (its common fields parsed here): for readers of stored jobs.
-WalkerJob parse_walker_job(const nlohmann::json& spec, bool sweep);
 
 // The walker fields a job kind accepts (for JobKind::fields).
 std::vector<std::string> walker_job_fields(bool sweep);
+
+// The kind `task` of the walker fields at one speed (evaluate, optimise, multistart), which `run`s
+// them: parsed by parse_walker_job, resolved by walker_job_json ("multistart" when
+// `random_starts`), its cost estimated by walker_job_cost.
+service::JobKind one_speed_kind(const std::string& task, bool random_starts,
+                                std::function<void(const WalkerJob&, service::JobContext&)> run);
 
 }  // namespace cyclopt::jobs

@@ -1,32 +1,32 @@
 #include "cyclopt/jobs/walker/walker_points.hpp"
 
-#include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/jobs/walker/walker_records.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 namespace cyclopt::jobs {
 
 namespace {
 
 // The point of `gait` with `values` (whose gait it sets) as its values.
-storage::SolutionPoint stored_point(const walker::PeriodicGait<double>& gait, records::WalkerPointRecord values,
-                                    storage::PointKey key, double parameter) {
-  storage::SolutionPoint p;
-  p.key = key;
-  p.parameter = parameter;
+WalkerPoint gait_point(const walker::PeriodicGait<double>& gait, records::WalkerPointRecord values, storage::PointKey key,
+                       double parameter) {
+  WalkerPoint w;
+  w.row.key = key;
+  w.row.parameter = parameter;
   values.gait = gait_record(gait);
   if (gait.real) {
-    if (const auto t = trajectory_record(gait.trajectory)) p.trajectory = nlohmann::json(*t);
-    p.objective = gait.objective;
-    p.constraint_violation = std::max({0.0, std::abs(gait.speed_equality), gait.inequalities.maxCoeff()});
+    w.trajectory = trajectory_record(gait.trajectory);
+    w.row.objective = gait.objective;
+    w.row.constraint_violation = std::max({0.0, std::abs(gait.speed_equality), gait.inequalities.maxCoeff()});
   }
-  p.status = gait.real ? "ok" : "no real solution";
-  p.values = values;
-  return p;
+  w.row.status = gait.real ? "ok" : "no real solution";
+  w.values = std::move(values);
+  return w;
 }
 
 records::WalkerPointRecord optimum_values(const walker::GaitOptimum& opt) {
@@ -38,33 +38,33 @@ records::WalkerPointRecord optimum_values(const walker::GaitOptimum& opt) {
   return v;
 }
 
-storage::SolutionPoint optimum_point(const walker::GaitOptimum& opt, const records::WalkerPointRecord& values,
-                                     storage::PointKey key, double parameter) {
-  storage::SolutionPoint p = stored_point(opt.gait, values, key, parameter);
-  p.iterations = opt.summary.iterations;
-  p.status = nlp::to_string(opt.summary.termination);
-  return p;
+WalkerPoint optimum_point(const walker::GaitOptimum& opt, const records::WalkerPointRecord& values, storage::PointKey key,
+                          double parameter) {
+  WalkerPoint w = gait_point(opt.gait, values, key, parameter);
+  w.row.iterations = opt.summary.iterations;
+  w.row.status = nlp::to_string(opt.summary.termination);
+  return w;
 }
 
 }  // namespace
 
-storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, const walker::GaitStart& start,
-                                storage::PointKey key, double parameter) {
+WalkerPoint walker_point(const walker::PeriodicGait<double>& gait, const walker::GaitStart& start, storage::PointKey key,
+                         double parameter) {
   records::WalkerPointRecord v;
   v.start = start.origin;
   v.x.assign(start.x.data(), start.x.data() + start.x.size());
-  return stored_point(gait, v, key, parameter);
+  return gait_point(gait, v, key, parameter);
 }
 
-storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter,
-                                std::optional<records::KktSensitivitiesRecord> sensitivities) {
+WalkerPoint walker_point(const walker::GaitOptimum& opt, storage::PointKey key, double parameter,
+                         std::optional<records::KktSensitivitiesRecord> sensitivities) {
   records::WalkerPointRecord v = optimum_values(opt);
   v.sensitivities = std::move(sensitivities);
   return optimum_point(opt, v, key, parameter);
 }
 
-storage::SolutionPoint point_of(const continuation::ParametricProblem& family, const continuation::CurvePoint& c,
-                                storage::PointKey key) {
+WalkerPoint walker_point(const continuation::ParametricProblem& family, const continuation::CurvePoint& c,
+                         storage::PointKey key) {
   const std::unique_ptr<nlp::Problem> problem = family.at(c.parameter);
   walker::GaitOptimum opt;
   opt.summary = c.corrector;
@@ -81,6 +81,26 @@ storage::SolutionPoint point_of(const continuation::ParametricProblem& family, c
                                                    .trust_region = c.trust_region,
                                                    .point_seconds = c.seconds};
   return optimum_point(opt, v, key, c.parameter);
+}
+
+storage::SolutionPoint point_of(const walker::PeriodicGait<double>& gait, const walker::GaitStart& start,
+                                storage::PointKey key, double parameter) {
+  return walker_point(gait, start, key, parameter).stored();
+}
+
+storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKey key, double parameter,
+                                std::optional<records::KktSensitivitiesRecord> sensitivities) {
+  return walker_point(opt, key, parameter, std::move(sensitivities)).stored();
+}
+
+bool CurveStore::operator()(const continuation::CurvePoint& c) {
+  const int curve = c.curve_id + offset_;
+  if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(c.curve_id), family_.parameter_name);
+  const int index = counts_[curve]++;
+  WalkerPoint w = point(c, {curve, index});
+  w.row.required = grid_points_required_ && c.on_grid;
+  ctx_.store_point(w.stored());
+  return ctx_.stop_reason() == service::StopReason::none;
 }
 
 }  // namespace cyclopt::jobs
