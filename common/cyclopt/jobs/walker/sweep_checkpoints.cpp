@@ -60,14 +60,7 @@ std::string solve_key(int batch, int start) {
 std::string run_key(int run) { return "run/" + std::to_string(run); }
 
 json curve_point_to_json(const continuation::CurvePoint& p) {
-  json j = records::ContinuationStepRecord{.curve_id = p.curve_id,
-                                           .on_grid = p.on_grid,
-                                           .converged = p.converged,
-                                           .predictor_attempts = p.predictor_attempts,
-                                           .predictor_steps = p.predictor_steps,
-                                           .kappa = p.kappa,
-                                           .trust_region = p.trust_region,
-                                           .point_seconds = p.seconds};
+  json j = continuation_step_record(p);
   j["parameter"] = p.parameter;
   j["x"] = as_vector(p.x);
   j["objective"] = p.objective;

@@ -72,14 +72,7 @@ WalkerPoint walker_point(const continuation::ParametricProblem& family, const co
   opt.gait = dynamic_cast<const walker::GaitProblem&>(*problem).gait_at(c.x);
   opt.start = c.predictor_attempts > 0 ? "QP predictor" : "previous point";
   records::WalkerPointRecord v = optimum_values(opt);
-  v.continuation = records::ContinuationStepRecord{.curve_id = c.curve_id,
-                                                   .on_grid = c.on_grid,
-                                                   .converged = c.converged,
-                                                   .predictor_attempts = c.predictor_attempts,
-                                                   .predictor_steps = c.predictor_steps,
-                                                   .kappa = c.kappa,
-                                                   .trust_region = c.trust_region,
-                                                   .point_seconds = c.seconds};
+  v.continuation = continuation_step_record(c);
   return optimum_point(opt, v, key, c.parameter);
 }
 

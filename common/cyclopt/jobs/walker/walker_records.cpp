@@ -70,6 +70,17 @@ records::SolverRecord solver_record(const nlp::SolverSummary& s) {
   return r;
 }
 
+records::ContinuationStepRecord continuation_step_record(const continuation::CurvePoint& p) {
+  return {.curve_id = p.curve_id,
+          .on_grid = p.on_grid,
+          .converged = p.converged,
+          .predictor_attempts = p.predictor_attempts,
+          .predictor_steps = p.predictor_steps,
+          .kappa = p.kappa,
+          .trust_region = p.trust_region,
+          .point_seconds = p.seconds};
+}
+
 std::optional<records::KktSensitivitiesRecord> sensitivities_record(const std::optional<studies::OptimumSensitivities>& s) {
   if (!s) return std::nullopt;
   records::KktSensitivitiesRecord r;
