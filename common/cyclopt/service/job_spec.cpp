@@ -1,5 +1,6 @@
 #include "cyclopt/service/job_spec.hpp"
 
+#include "cyclopt/service/job_schema.hpp"
 #include "cyclopt/service/spec_fields.hpp"
 
 #include <algorithm>
@@ -76,9 +77,8 @@ const std::vector<std::string>& known_scenes() {
   return v;
 }
 const std::vector<std::string>& known_tasks() {
-  static const std::vector<std::string> v = {"evaluate",   "optimise",        "multistart",  "continuation",
-                                            "sweep",      "sensitivity",     "foot_sweep",      "foot_comparison", "foot_design",
-                                            "foot_fit",   "giant_swing"};
+  static const std::vector<std::string> v =
+      job_schema().schema().at("properties").at("task").at("enum").get<std::vector<std::string>>();
   return v;
 }
 const std::vector<std::string>& known_objectives() {

@@ -22,7 +22,7 @@
 namespace cyclopt::service {
 
 const std::vector<std::string>& known_scenes();
-const std::vector<std::string>& known_tasks();  // every task of the schema, registered or not
+const std::vector<std::string>& known_tasks();  // every task of the job schema (job_schema.hpp), registered or not
 const std::vector<std::string>& known_objectives();
 
 struct ValidatedJobSpec {
