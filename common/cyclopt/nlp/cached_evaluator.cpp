@@ -27,7 +27,8 @@ const EvaluationStatus& CachedEvaluator::evaluate(const Eigen::VectorXd& x, bool
     bool finite = std::isfinite(evaluation_.objective) && evaluation_.equalities.allFinite() && evaluation_.inequalities.allFinite();
     if (with_derivatives)
       finite = finite && evaluation_.gradient.allFinite() && evaluation_.equality_jacobian.allFinite() &&
-               evaluation_.inequality_jacobian.allFinite();
+               evaluation_.inequality_jacobian.allFinite() && evaluation_.kinks.values.allFinite() &&
+               evaluation_.kinks.jacobian.allFinite();
     if (!finite) status_ = EvaluationStatus::failure("non-finite value or derivative");
   }
   if (!status_.ok) ++counts_.failed_evaluations;
@@ -56,6 +57,13 @@ void CachedEvaluator::check_sizes(bool with_derivatives) const {
           "equality_jacobian not num_equalities() x num_variables()");
   require(evaluation_.inequality_jacobian.rows() == m_in && evaluation_.inequality_jacobian.cols() == n,
           "inequality_jacobian not num_inequalities() x num_variables()");
+  const KinkedTerms& k = evaluation_.kinks;
+  const Eigen::Index samples = k.values.size();
+  require(k.empty() || (k.jacobian.rows() == samples && k.jacobian.cols() == n),
+          "kinks.jacobian not one row per kinks.values entry x num_variables()");
+  for (const KinkedTerm& t : k.terms)
+    require(t.sample >= 0 && t.sample < samples && t.partner >= -1 && t.partner < samples && t.weight > 0.0,
+            "a kinked term with a sample or partner outside [0, " + std::to_string(samples) + ") or a weight <= 0");
 }
 
 }  // namespace cyclopt::nlp
