@@ -6,6 +6,7 @@
 #include "autodiff_problem.hpp"
 
 #include "cyclopt/autodiff/dual.hpp"
+#include "cyclopt/nlp/active_set_projections.hpp"
 #include "cyclopt/nlp/clarke_stationarity.hpp"
 #include "cyclopt/nlp/kinked_terms.hpp"
 #include "cyclopt/nlp/solve.hpp"
@@ -111,6 +112,24 @@ TEST(KinkedSubproblem, ReachesTheKnownMinimiserOnTheKink) {
   EXPECT_GE(s.sigma.minCoeff(), 0.0);
   EXPECT_LE(s.sigma.maxCoeff(), w);
   EXPECT_NEAR(s.qp.objective, 0.25, 1e-12);  // 1/2 |d|^2 + g'd + w |d1 - d2| at d = (0.5, 0.5)
+}
+
+// The second-order correction with held kinks (active_set_projections.hpp) solves the kink rows
+// p_s + grad p_s' d = 0 with the constraints, and is the shortest such step.
+TEST(KinkedSecondOrderCorrection, HoldsTheKinksAndIsTheShortestStep) {
+  Evaluation trial = one_kink(v2(0.0, 0.0), v2(1.0, 2.0), 0.3, 1.0, 1.0);
+  trial.equalities = VectorXd::Constant(1, -0.5);
+  trial.equality_jacobian = (MatrixXd(1, 2) << 1.0, -1.0).finished();
+  const VectorXd d = second_order_correction(trial, {}, {0});
+  EXPECT_NEAR(trial.kinks.values[0] + trial.kinks.jacobian.row(0).dot(d), 0.0, 1e-14);
+  EXPECT_NEAR(trial.equalities[0] + trial.equality_jacobian.row(0).dot(d), 0.0, 1e-14);
+  // Two rows in two unknowns: the unique solution of [1 -1; 1 2] d = [0.5; -0.3].
+  EXPECT_NEAR(d[0], (2.0 * 0.5 - 0.3) / 3.0, 1e-14);
+  EXPECT_NEAR(d[1], (-0.3 - 0.5) / 3.0, 1e-14);
+  // Without the kink: the shortest step of the equality alone, d = 0.5 (1, -1) / 2.
+  const VectorXd d0 = second_order_correction(trial, {});
+  EXPECT_NEAR(d0[0], 0.25, 1e-14);
+  EXPECT_NEAR(d0[1], -0.25, 1e-14);
 }
 
 // f(x) = 1/2 |x - c|^2 + sum_k w max(p_k, 0),  p_k = s_k (1 + 0.1 k)(1 + 0.1 x3^2)(x1 - x2),

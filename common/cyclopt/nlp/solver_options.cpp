@@ -86,6 +86,7 @@ void validate(const SolverOptions& o) {
   require(s.progress_min_decrease > 0 && s.progress_min_decrease < 1, "sqp.progress_min_decrease", "in (0, 1)");
   require(s.kinks.model_band > 0 && s.kinks.model_band < 1, "sqp.kinks.model_band", "in (0, 1)");
   require(s.kinks.test_band > 0 && s.kinks.test_band <= s.kinks.model_band, "sqp.kinks.test_band", "in (0, sqp.kinks.model_band]");
+  require(s.kinks.active_tolerance >= 0, "sqp.kinks.active_tolerance", ">= 0");
 }
 
 SolverOptions seed_table_6_2_options() {

@@ -28,6 +28,9 @@ struct KinkOptions {
   // Samples within test_band * max(1, |x|_inf) of their kink may use their Clarke subgradients in
   // the optimality test (the Goldstein-type radius of the nonsmooth test). In (0, model_band].
   double test_band = 1e-9;
+  // The inequalities with c_i >= -active_tolerance may carry multipliers in the nonsmooth test (the
+  // QP's working set alone would admit rows that are no longer active: no complementarity). >= 0.
+  double active_tolerance = 1e-7;
 };
 
 struct SqpOptions {

@@ -167,7 +167,14 @@ IterateMultipliers SqpRun::multipliers_at(const Evaluation& e, const VectorXd& x
   if (!sqp_.kinks.enabled || e.kinks.empty()) return y;
   const double tol = options_.constraint_tolerance;
   y.model = clarke_multipliers(e, active, near_kinks(e.kinks, kink_band(x, model_band_)), x, lower_, upper_, tol);
-  y.test = clarke_multipliers(e, active, near_kinks(e.kinks, kink_band(x, sqp_.kinks.test_band)), x, lower_, upper_, tol);
+  ActiveConstraints tested{{}, active.bounds};  // complementarity: the working set's rows still active
+  for (int i : active.inequalities)
+    if (e.inequalities[i] >= -sqp_.kinks.active_tolerance) tested.inequalities.push_back(i);
+  for (Index i = 0; i < m_in_; ++i)
+    if (e.inequalities[i] >= -sqp_.kinks.active_tolerance &&
+        std::find(active.inequalities.begin(), active.inequalities.end(), i) == active.inequalities.end())
+      tested.inequalities.push_back(static_cast<int>(i));
+  y.test = clarke_multipliers(e, tested, near_kinks(e.kinks, kink_band(x, sqp_.kinks.test_band)), x, lower_, upper_, tol);
   return y;
 }
 
@@ -258,7 +265,12 @@ qp::QpSolution SqpRun::solve_subproblem(bool kinked, const NearKinks& kinks) {
 std::optional<SearchDirection> SqpRun::search_direction() {
   const bool kinked = kinks_on() && !model_kinks().empty() && qp::is_strictly_convex(W_, sqp_.qp.curvature_tolerance);
   NearKinks kinks = kinked ? model_kinks() : NearKinks{};
-  const qp::QpSolution qp = solve_subproblem(kinked, kinks);
+  qp::QpSolution qp = solve_subproblem(kinked, kinks);
+  if (kinked && qp.status == qp::QpStatus::max_iterations) {  // the seed's QP then: the kinks' model is an addition
+    if (options_.print_level > 0) std::printf("sqp        kinked QP unfinished after %d iterations: QP (6.7) instead\n", qp.iterations);
+    kinks = {};
+    qp = solve_subproblem(false, kinks);
+  }
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
     stop(Termination::numerical_failure, std::string("QP subproblem (6.7): ") + qp::to_string(qp.status) + ": " + qp.message);
