@@ -27,8 +27,7 @@ const EvaluationStatus& CachedEvaluator::evaluate(const Eigen::VectorXd& x, bool
     bool finite = std::isfinite(evaluation_.objective) && evaluation_.equalities.allFinite() && evaluation_.inequalities.allFinite();
     if (with_derivatives)
       finite = finite && evaluation_.gradient.allFinite() && evaluation_.equality_jacobian.allFinite() &&
-               evaluation_.inequality_jacobian.allFinite() && evaluation_.kinks.values.allFinite() &&
-               evaluation_.kinks.jacobian.allFinite();
+               evaluation_.inequality_jacobian.allFinite();
     if (!finite) status_ = EvaluationStatus::failure("non-finite value or derivative");
   }
   if (!status_.ok) ++counts_.failed_evaluations;

@@ -10,6 +10,9 @@ nlp::KinkedTerms mechanical_power_kinks(const Eigen::MatrixXd& power, const Eige
   using D = ad::Dual<2>;
   const Eigen::Index joints = power.rows(), points = power.cols();
   nlp::KinkedTerms k;
+  // No kinks to declare where f_mech's denominator is not positive (a gait stepping backwards: the
+  // positive parts enter with negative weights, concave) or the powers' derivatives are not finite.
+  if (!(weight_step > 0.0) || !power.allFinite() || !power_jacobian.allFinite() || !durations.allFinite()) return k;
   k.values = power.transpose().reshaped();  // sample j P + i
   k.jacobian = power_jacobian;
   k.terms.reserve(static_cast<size_t>(2 * joints * (points - 1)));

@@ -17,7 +17,7 @@ namespace cyclopt::walker {
 
 // power: joints x grid points (PeriodicGait::joint_power); power_jacobian: one row per sample j P + i
 // (GaitDerivatives::joint_power); durations: t_i+1 - t_i (s, PeriodicGait::interval_duration);
-// weight_step: m g L (N m), f_mech's denominator.
+// weight_step: m g L (N m), f_mech's denominator. None where weight_step <= 0 or a value is not finite.
 nlp::KinkedTerms mechanical_power_kinks(const Eigen::MatrixXd& power, const Eigen::MatrixXd& power_jacobian,
                                         const Eigen::VectorXd& durations, double weight_step);
 
