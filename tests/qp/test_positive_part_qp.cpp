@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -148,6 +149,40 @@ TEST(PositivePartQp, AnyStartGivesTheSameOptimum) {
     EXPECT_NEAR(warm.qp.objective, cold.qp.objective, 1e-9 * (1.0 + std::abs(cold.qp.objective)));
     EXPECT_LE((warm.qp.x - cold.qp.x).lpNorm<Eigen::Infinity>(), 1e-6 * (1.0 + cold.qp.x.lpNorm<Eigen::Infinity>()));
   }
+}
+
+// Ill-conditioned H (random_qp.hpp, as the SQP's W_1 from (6.24)) with terms vanishing near the
+// solution: x = -H^-1 (g + M'v) alone keeps the free rows - the working constraints and the terms
+// with sigma inside (0, w), held at their kink - only to ~cond(H) eps |x| (1e-7); refined on them
+// (working_set_refinement.hpp), to rounding.
+TEST(PositivePartQp, FreeRowsHoldToRoundingWhenTheHessianIsIllConditioned) {
+  std::mt19937_64 rng(71);
+  std::normal_distribution<double> normal;
+  double worst = 0.0;
+  int held = 0;
+  for (int k = 0; k < 200; ++k) {
+    SCOPED_TRACE("problem " + std::to_string(k));
+    const int n = 4 + k % 8;
+    const QuadraticProgram qp = cyclopt::qp::testing::ill_conditioned_qp(rng, n);
+    PositivePartTerms terms;
+    terms.matrix = MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
+    terms.rhs = VectorXd::NullaryExpr(n, [&] { return 0.1 * normal(rng); });
+    terms.weights = VectorXd::NullaryExpr(n, [&] { return 0.5 + std::abs(normal(rng)); });
+    const PositivePartQpSolution s = cyclopt::qp::solve_positive_part_qp(qp, terms);
+    ASSERT_EQ(s.qp.status, QpStatus::optimal) << s.qp.message;
+    double residual = std::abs((qp.equality_matrix * s.qp.x - qp.equality_rhs)[0]);
+    for (int i : s.qp.working_set.inequalities)
+      residual = std::max(residual, std::abs(qp.inequality_matrix.row(i).dot(s.qp.x) - qp.inequality_rhs[i]));
+    for (Eigen::Index t = 0; t < terms.rhs.size(); ++t)
+      if (s.sigma[t] > 0.0 && s.sigma[t] < terms.weights[t]) {
+        residual = std::max(residual, std::abs(terms.matrix.row(t).dot(s.qp.x) - terms.rhs[t]));
+        ++held;
+      }
+    worst = std::max(worst, residual / (1.0 + s.qp.x.lpNorm<Eigen::Infinity>()));
+  }
+  std::printf("ill-conditioned QPs with %d terms at their kink: largest free-row residual %.1e relative to |x|\n", held, worst);
+  EXPECT_GT(held, 100);
+  EXPECT_LE(worst, 1e-13);
 }
 
 TEST(PositivePartQp, InconsistentConstraintsAreInfeasible) {

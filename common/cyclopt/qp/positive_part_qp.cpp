@@ -1,6 +1,7 @@
 #include "cyclopt/qp/positive_part_qp.hpp"
 
 #include "cyclopt/qp/dual_active_set_solver.hpp"
+#include "cyclopt/qp/working_set_refinement.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -269,6 +270,35 @@ PositivePartQpSolution solve_positive_part_qp(const QuadraticProgram& qp, const 
     state[static_cast<size_t>(entering)] = State::free;
     free.push_back(entering);
     ++sol.iterations;
+  }
+  if (sol.status == QpStatus::optimal && !free.empty()) {
+    // x = -H^-1 (g + M'v) keeps the free rows only to ~cond(H) eps |x|: refined on an independent
+    // subset of them (working_set_refinement.hpp); the dependent rest, the rows at a bound and the
+    // free multipliers' box must still hold.
+    const Eigen::ColPivHouseholderQR<MatrixXd> qr(rows.M(free, Eigen::all).transpose());
+    std::vector<int> basis, rest;
+    for (Index k = 0; k < static_cast<Index>(free.size()); ++k)
+      (k < qr.rank() ? basis : rest).push_back(free[static_cast<size_t>(qr.colsPermutation().indices()[k])]);
+    VectorXd g_fixed = at_bound_sum();
+    for (int j : rest) g_fixed += v[j] * rows.M.row(j).transpose();
+    const auto others_hold = [&](const VectorXd& z) {
+      const VectorXd r = rows.M * z - rows.r;
+      for (Index j = 0; j < N; ++j) {
+        const State st = state[static_cast<size_t>(j)];
+        const double scaled = r[j] / row_scale[j];
+        if ((st == State::lower && scaled > options.feasibility_tolerance) || (st == State::upper && -scaled > options.feasibility_tolerance))
+          return false;
+      }
+      for (int j : rest)
+        if (std::abs(r[j] / row_scale[j]) > options.feasibility_tolerance) return false;
+      return true;
+    };
+    VectorXd x_refined = x, u = -v(basis);  // H x + g + M'v = 0: u = -v in the refinement's form H x + g - N u = 0
+    refine_on_working_set(qp.hessian, g_fixed, rows.M(basis, Eigen::all).transpose(), rows.r(basis), others_hold, x_refined, u);
+    bool in_box = true;
+    for (size_t k = 0; k < basis.size(); ++k)
+      in_box = in_box && -u[static_cast<Index>(k)] >= rows.lo[basis[k]] && -u[static_cast<Index>(k)] <= rows.hi[basis[k]];
+    if (in_box) x = x_refined, v(basis) = -u;
   }
   sol.x = x;
   out.sigma = v.head(K);
