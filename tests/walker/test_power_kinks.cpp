@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <complex>
+#include <limits>
 #include <random>
 
 namespace cyclopt::walker {
@@ -95,6 +96,23 @@ TEST(PowerKinks, SlopesAreTheRulesDerivativeAndWeightsItsJump) {
       minus(j, i) -= h;
       EXPECT_NEAR(slope_sum[s], (rule(plus) - rule(minus)) / (2.0 * h), 1e-8 * slope_sum.maxCoeff()) << "sample " << s;
     }
+}
+
+// A gait stepping backwards (m g L <= 0, met by foot-design solves) would give the positive parts
+// negative weights - concave, no kinks of the l1 kind - and a non-finite power or derivative has no
+// kink to model: none are declared.
+TEST(PowerKinks, NoneAtABackwardStepOrANonFinitePower) {
+  const Eigen::MatrixXd power = (Eigen::MatrixXd(1, 3) << 1.0, -2.0, 0.5).finished();
+  const Eigen::MatrixXd jacobian = Eigen::MatrixXd::Ones(3, 2);
+  const Eigen::VectorXd durations = Eigen::VectorXd::Constant(2, 0.01);
+  EXPECT_FALSE(mechanical_power_kinks(power, jacobian, durations, 412.0).empty());
+  EXPECT_TRUE(mechanical_power_kinks(power, jacobian, durations, -412.0).empty());
+  EXPECT_TRUE(mechanical_power_kinks(power, jacobian, durations, 0.0).empty());
+  Eigen::MatrixXd nan_power = power, nan_jacobian = jacobian;
+  nan_power(0, 1) = std::numeric_limits<double>::quiet_NaN();
+  nan_jacobian(2, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(mechanical_power_kinks(nan_power, jacobian, durations, 412.0).empty());
+  EXPECT_TRUE(mechanical_power_kinks(power, nan_jacobian, durations, 412.0).empty());
 }
 
 TEST(PowerKinks, DeclaredForTheSeedsRuleOnly) {
