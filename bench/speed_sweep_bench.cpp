@@ -15,7 +15,9 @@
 // (6.24); the sweep is stopped at
 // the first point after the budget (then the per-speed table shows what was reached); "plain" switches the
 // recovery (R1-R3) off. Options anywhere on the line: --seeds=1,2,3 (one search per seed,
-// SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8).
+// SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8),
+// --kinks (every solve of the sweep - multistarts and correctors - with f_mech's kinks modelled,
+// nlp::KinkOptions, issue 52).
 #include "bench_foot.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
@@ -79,10 +81,11 @@ void print_fine_grid_errors(const walker::WalkerModel<double>& model, const walk
 
 int main(int argc_in, char** argv_in) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  // --seeds= and --closure= anywhere; the rest are positional.
+  // --seeds=, --closure= and --kinks anywhere; the rest are positional.
   std::vector<char*> positional;
   std::vector<std::uint64_t> seeds{1};
   int closure_passes = EnvelopeClosureOptions{}.max_passes;
+  bool kinks = false;
   for (int i = 0; i < argc_in; ++i) {
     const std::string a = argv_in[i];
     if (a.rfind("--seeds=", 0) == 0) {
@@ -95,6 +98,8 @@ int main(int argc_in, char** argv_in) {
       }
     } else if (a.rfind("--closure=", 0) == 0) {
       closure_passes = std::atoi(a.c_str() + 10);
+    } else if (a == "--kinks") {
+      kinks = true;
     } else {
       positional.push_back(argv_in[i]);
     }
@@ -128,6 +133,7 @@ int main(int argc_in, char** argv_in) {
   else if (argc > 8)
     o.continuation.predictor = parse_predictor(argv[8]);
   if (argc > 9) o.dominance_starts = std::atoi(argv[9]);
+  o.continuation.corrector.sqp.kinks.enabled = kinks;  // the multistarts' solver is built from the corrector's
   // The trivial predictor hands the corrector no W: it starts from W_1 of (6.24), as in continuation_bench.
   if (o.continuation.predictor == continuation::Predictor::trivial) o.continuation.corrector.sqp.difference_hessian = true;
   const SpeedSweepResult r = speed_sweep(model, po, o, [&](const CurvePoint& p) {
@@ -138,9 +144,9 @@ int main(int argc_in, char** argv_in) {
   std::printf("\nfoot %s, f_mech (positive-power band %g W), P = %d (multistarts at P = %d first), %s rule, %d multistart runs per seed speed: %d curves, %zu continuation runs\n",
               foot_name.c_str(), po.positive_power_band, constants.points, o.coarse_points > 0 ? o.coarse_points : constants.points,
               rule == walker::Quadrature::trapezoid ? "trapezoid" : "corrected", starts, r.curves, r.runs.size());
-  std::printf("continuation: %s predictor, predictor Hessian %s; dominance tests' R2 with %d perturbations\n",
+  std::printf("continuation: %s predictor, predictor Hessian %s; dominance tests' R2 with %d perturbations; f_mech's kinks %s\n",
               to_string(o.continuation.predictor), predictor_hessian_name(o.continuation.reuse_predictor_hessian),
-              o.dominance_starts > 0 ? o.dominance_starts : o.starts);
+              o.dominance_starts > 0 ? o.dominance_starts : o.starts, kinks ? "modelled (--kinks)" : "not modelled");
   // Idle estimate: the multistarts use both cores, the continuation runs one.
   const double cpu = bench::cpu_seconds() - cpu_at_start;
   std::printf("wall time %.1f s (multistart %.1f s for %d solves, recovery %.1f s), %s at the end\n", r.seconds,

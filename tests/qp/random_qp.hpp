@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -50,6 +51,22 @@ inline QuadraticProgram random_qp(std::mt19937_64& rng, bool* semidefinite) {
       if (uniform(rng) < 0.4) qp.lower_bounds[i] = -std::numeric_limits<double>::infinity();
       if (uniform(rng) < 0.4) qp.upper_bounds[i] = std::numeric_limits<double>::infinity();
     }
+  return qp;
+}
+
+// Ill-conditioned H, as the SQP's W_1 from (6.24) with eigenvalues clamped at sqrt(eps) lambda_max
+// (cond ~1e8), one equality and n inequalities feasible at a random point.
+inline QuadraticProgram ill_conditioned_qp(std::mt19937_64& rng, int n) {
+  std::normal_distribution<double> normal;
+  const MatrixXd Q = Eigen::HouseholderQR<MatrixXd>(MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); })).householderQ();
+  VectorXd eigenvalues = VectorXd::NullaryExpr(n, [&] { return std::exp(2.0 * normal(rng)); });
+  for (int i = 0; i < n; i += 2) eigenvalues[i] = 1.5e-8 * eigenvalues.maxCoeff();
+  QuadraticProgram qp = unconstrained(Q * eigenvalues.asDiagonal() * Q.transpose(), VectorXd::NullaryExpr(n, [&] { return normal(rng); }));
+  const VectorXd x0 = VectorXd::NullaryExpr(n, [&] { return 3.0 * normal(rng); });
+  qp.equality_matrix = MatrixXd::NullaryExpr(1, n, [&] { return normal(rng); });
+  qp.equality_rhs = qp.equality_matrix * x0;
+  qp.inequality_matrix = MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
+  qp.inequality_rhs = qp.inequality_matrix * x0 + VectorXd::NullaryExpr(n, [&] { return std::abs(normal(rng)); });
   return qp;
 }
 

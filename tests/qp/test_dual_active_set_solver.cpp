@@ -81,19 +81,9 @@ TEST(DualActiveSetSolver, RandomQpsAgreeWithThePrimalMethod) {
 // difference-Hessian start crawled at violation 3e-7 with steps of 1e-10 for 500 iterations).
 TEST(DualActiveSetSolver, WorkingRowsHoldToRoundingWhenTheHessianIsIllConditioned) {
   std::mt19937_64 rng(71);
-  std::normal_distribution<double> normal;
   double worst = 0.0;
   for (int k = 0; k < 200; ++k) {
-    const int n = 4 + k % 8;
-    const MatrixXd Q = Eigen::HouseholderQR<MatrixXd>(MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); })).householderQ();
-    VectorXd eigenvalues = VectorXd::NullaryExpr(n, [&] { return std::exp(2.0 * normal(rng)); });
-    for (int i = 0; i < n; i += 2) eigenvalues[i] = 1.5e-8 * eigenvalues.maxCoeff();
-    QuadraticProgram qp = unconstrained(Q * eigenvalues.asDiagonal() * Q.transpose(), VectorXd::NullaryExpr(n, [&] { return normal(rng); }));
-    const VectorXd x0 = VectorXd::NullaryExpr(n, [&] { return 3.0 * normal(rng); });
-    qp.equality_matrix = MatrixXd::NullaryExpr(1, n, [&] { return normal(rng); });
-    qp.equality_rhs = qp.equality_matrix * x0;
-    qp.inequality_matrix = MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
-    qp.inequality_rhs = qp.inequality_matrix * x0 + VectorXd::NullaryExpr(n, [&] { return std::abs(normal(rng)); });
+    const QuadraticProgram qp = cyclopt::qp::testing::ill_conditioned_qp(rng, 4 + k % 8);
     const QpSolution s = solve_dual_active_set(qp);
     ASSERT_EQ(s.status, QpStatus::optimal) << k;
     double residual = std::abs((qp.equality_matrix * s.x - qp.equality_rhs)[0]);

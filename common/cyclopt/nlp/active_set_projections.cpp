@@ -37,12 +37,24 @@ LeastSquaresMultipliers least_squares_multipliers(const Evaluation& e, const Act
 }
 
 VectorXd second_order_correction(const Evaluation& trial, const std::vector<int>& active_inequalities) {
-  const MatrixXd A = active_jacobian(trial, active_inequalities);
+  return second_order_correction(trial, active_inequalities, {});
+}
+
+VectorXd second_order_correction(const Evaluation& trial, const std::vector<int>& active_inequalities,
+                                 const std::vector<int>& held_kinks) {
+  const Index m_c = trial.equalities.size() + static_cast<Index>(active_inequalities.size());
+  const Index m_k = static_cast<Index>(held_kinks.size());
+  MatrixXd A(m_c + m_k, trial.gradient.size());
+  A.topRows(m_c) = active_jacobian(trial, active_inequalities);
   if (A.rows() == 0) return VectorXd::Zero(trial.gradient.size());
   VectorXd c(A.rows());
   c.head(trial.equalities.size()) = trial.equalities;
   for (size_t k = 0; k < active_inequalities.size(); ++k)
     c[trial.equalities.size() + static_cast<Index>(k)] = trial.inequalities[active_inequalities[k]];
+  if (m_k) {
+    A.bottomRows(m_k) = trial.kinks.jacobian(held_kinks, Eigen::all);
+    c.tail(m_k) = trial.kinks.values(held_kinks);
+  }
   // Minimum-norm solution of A d = -c: the solution of the KKT system (6.18).
   return Eigen::CompleteOrthogonalDecomposition<MatrixXd>(A).solve(-c);
 }

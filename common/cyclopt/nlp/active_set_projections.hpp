@@ -32,4 +32,9 @@ LeastSquaresMultipliers least_squares_multipliers(const Evaluation& e, const Act
 // inequalities (6.17), at the trial point x_k + d_k of the evaluation (with derivatives).
 Eigen::VectorXd second_order_correction(const Evaluation& trial, const std::vector<int>& active_inequalities);
 
+// The same with the kinked samples the QP held at their kink (issue 52) as further rows:
+// p_s(x_k + d_k) + grad p_s' d_soc = 0, so the correction keeps a held joint held.
+Eigen::VectorXd second_order_correction(const Evaluation& trial, const std::vector<int>& active_inequalities,
+                                        const std::vector<int>& held_kinks);
+
 }  // namespace cyclopt::nlp

@@ -56,6 +56,13 @@ void CachedEvaluator::check_sizes(bool with_derivatives) const {
           "equality_jacobian not num_equalities() x num_variables()");
   require(evaluation_.inequality_jacobian.rows() == m_in && evaluation_.inequality_jacobian.cols() == n,
           "inequality_jacobian not num_inequalities() x num_variables()");
+  const KinkedTerms& k = evaluation_.kinks;
+  const Eigen::Index samples = k.values.size();
+  require(k.empty() || (k.jacobian.rows() == samples && k.jacobian.cols() == n),
+          "kinks.jacobian not one row per kinks.values entry x num_variables()");
+  for (const KinkedTerm& t : k.terms)
+    require(t.sample >= 0 && t.sample < samples && t.partner >= -1 && t.partner < samples && t.weight > 0.0,
+            "a kinked term with a sample or partner outside [0, " + std::to_string(samples) + ") or a weight <= 0");
 }
 
 }  // namespace cyclopt::nlp

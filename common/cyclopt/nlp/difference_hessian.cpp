@@ -12,12 +12,14 @@ std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator
                                                                  const Evaluation& at,
                                                                  const Eigen::VectorXd& equality_multipliers,
                                                                  const Eigen::VectorXd& inequality_multipliers,
-                                                                 double objective_factor) {
+                                                                 double objective_factor, const NearKinks& kinks,
+                                                                 const Eigen::VectorXd& kink_multipliers) {
   const Eigen::Index n = x.size();
   auto gradient = [&](const Evaluation& e) {
-    Evaluation weighted = e;
-    weighted.gradient *= objective_factor;
-    return lagrangian_gradient(weighted, equality_multipliers, inequality_multipliers, {});
+    Eigen::VectorXd g = objective_factor * lagrangian_gradient(e, {}, {}, {}, kinks, kink_multipliers);
+    if (equality_multipliers.size()) g += e.equality_jacobian.transpose() * equality_multipliers;
+    if (inequality_multipliers.size()) g += e.inequality_jacobian.transpose() * inequality_multipliers;
+    return g;
   };
   const Eigen::VectorXd base = gradient(at);
   Eigen::MatrixXd H(n, n);

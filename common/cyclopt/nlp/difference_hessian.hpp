@@ -4,6 +4,9 @@
 // evaluations with derivatives, symmetrised. A point x + h e_j without a real solution is
 // replaced by x - h e_j (the seed's "no real solution" rule). objective_factor sigma weights f in
 // L = sigma f + y_eq' c_eq + y_in' c_in (Ipopt's eval_h asks for sigma = 0 in its restoration phase).
+// With kink multipliers (issue 52) the gradient is that of kkt_measures.hpp's kinked Lagrangian: the
+// curvature of the kinked terms near their kink enters through their multipliers, not through
+// the slopes' jumps across the kinks.
 // The columns run on two threads when a core is spare (parallel_columns.hpp).
 
 #include "cyclopt/nlp/cached_evaluator.hpp"
@@ -20,6 +23,7 @@ std::optional<Eigen::MatrixXd> lagrangian_hessian_by_differences(CachedEvaluator
                                                                  const Evaluation& at,
                                                                  const Eigen::VectorXd& equality_multipliers,
                                                                  const Eigen::VectorXd& inequality_multipliers,
-                                                                 double objective_factor = 1.0);
+                                                                 double objective_factor = 1.0, const NearKinks& kinks = {},
+                                                                 const Eigen::VectorXd& kink_multipliers = {});
 
 }  // namespace cyclopt::nlp

@@ -349,6 +349,7 @@ SolverSummary solve_with_ipopt(Problem& problem, const SolverOptions& options, c
     summary.termination = Termination::user_stop;
     summary.message += " (stopped by should_stop)";
   }
+  if (summary.termination == Termination::converged) summary.optimality = Optimality::kkt;
   return summary;
 }
 

@@ -22,4 +22,12 @@ Eigen::VectorXd lagrangian_gradient(const Evaluation& e, const Eigen::VectorXd& 
   return g;
 }
 
+Eigen::VectorXd lagrangian_gradient(const Evaluation& e, const Eigen::VectorXd& equality_multipliers,
+                                    const Eigen::VectorXd& inequality_multipliers, const Eigen::VectorXd& bound_multipliers,
+                                    const NearKinks& kinks, const Eigen::VectorXd& kink_multipliers) {
+  Eigen::VectorXd g = lagrangian_gradient(e, equality_multipliers, inequality_multipliers, bound_multipliers);
+  if (!kinks.empty()) g += kink_jacobian(e.kinks, kinks).transpose() * (kink_multipliers - kink_slopes(e.kinks, kinks));
+  return g;
+}
+
 }  // namespace cyclopt::nlp

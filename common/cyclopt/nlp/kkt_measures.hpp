@@ -17,4 +17,13 @@ double constraint_violation(const Evaluation& e, const Eigen::VectorXd& x, const
 Eigen::VectorXd lagrangian_gradient(const Evaluation& e, const Eigen::VectorXd& equality_multipliers,
                                     const Eigen::VectorXd& inequality_multipliers, const Eigen::VectorXd& bound_multipliers);
 
+// The same with multipliers sigma_s of the kinked terms near their kink (kinked_terms.hpp) in place
+// of the slopes a_s the gradient took there:  ... + sum_s (sigma_s - a_s) grad p_s. With sigma_s
+// in [0, w_s] an element of the Clarke generalised gradient of the Lagrangian (issue 52); with
+// sigma fixed, the gradient of a smooth Lagrangian whose differences give the Hessian model of the
+// kinked terms' curvature.
+Eigen::VectorXd lagrangian_gradient(const Evaluation& e, const Eigen::VectorXd& equality_multipliers,
+                                    const Eigen::VectorXd& inequality_multipliers, const Eigen::VectorXd& bound_multipliers,
+                                    const NearKinks& kinks, const Eigen::VectorXd& kink_multipliers);
+
 }  // namespace cyclopt::nlp

@@ -36,4 +36,13 @@ double l1_model(const Evaluation& e, const Eigen::MatrixXd& W, const Eigen::Vect
          weighted_violation(e.equality_jacobian * d + e.equalities, e.inequality_jacobian * d + e.inequalities, mu);
 }
 
+double l1_model(const Evaluation& e, const Eigen::MatrixXd& W, const Eigen::VectorXd& d, const Penalties& mu,
+                const NearKinks& kinks) {
+  if (kinks.empty()) return l1_model(e, W, d, mu);
+  const Eigen::MatrixXd Jk = kink_jacobian(e.kinks, kinks);
+  const Eigen::VectorXd p = e.kinks.values(kinks.samples);
+  const double kinked = kinks.weights.dot((p + Jk * d).cwiseMax(0.0) - p.cwiseMax(0.0));
+  return l1_model(e, W, d, mu) - kinks.slopes.dot(Jk * d) + kinked;
+}
+
 }  // namespace cyclopt::nlp

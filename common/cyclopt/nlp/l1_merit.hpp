@@ -25,4 +25,10 @@ double linearized_violation(const Evaluation& e, const Eigen::VectorXd& d);
 // eq. (6.8) (eq. (6.12) when all weights are equal). Needs derivatives.
 double l1_model(const Evaluation& e, const Eigen::MatrixXd& W, const Eigen::VectorXd& d, const Penalties& mu);
 
+// The same with the kinked terms near their kink modelled as the subproblem of issue 52 does
+// (sqp_subproblems.hpp): grad f' d replaced by (grad f - sum a_s grad p_s)' d
+// + sum w_s (max(p_s + grad p_s' d, 0) - max(p_s, 0)). Equal to (6.8) for d = 0.
+double l1_model(const Evaluation& e, const Eigen::MatrixXd& W, const Eigen::VectorXd& d, const Penalties& mu,
+                const NearKinks& kinks);
+
 }  // namespace cyclopt::nlp

@@ -7,6 +7,8 @@
 // (the walker has ~30 variables and ~2000 constraints). An evaluation may fail - the walker's
 // "no real solution" (eq. 5.87) - and solvers must treat that as "step too long", never as a crash.
 
+#include "cyclopt/nlp/kinked_terms.hpp"
+
 #include <Eigen/Core>
 
 #include <memory>
@@ -23,6 +25,9 @@ struct Evaluation {
   Eigen::VectorXd gradient;              // df/dx, size n
   Eigen::MatrixXd equality_jacobian;     // dc_eq/dx, num_equalities() x n
   Eigen::MatrixXd inequality_jacobian;   // dc_in/dx, num_inequalities() x n
+  // The objective's kinked terms (kinked_terms.hpp), with derivatives, from problems that declare
+  // them (the walker's f_mech); empty otherwise. Solvers that do not use them see f as always.
+  KinkedTerms kinks;
 };
 
 // Outcome of one evaluation: ok, or a failure with a human-readable reason.

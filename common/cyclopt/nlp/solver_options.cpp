@@ -20,6 +20,15 @@ const char* to_string(Termination t) {
   return "unknown";
 }
 
+const char* to_string(Optimality o) {
+  switch (o) {
+    case Optimality::none: return "none";
+    case Optimality::kkt: return "KKT";
+    case Optimality::nonsmooth_kkt: return "nonsmooth KKT";
+  }
+  return "unknown";
+}
+
 const char* to_string(SolverKind kind) {
   switch (kind) {
     case SolverKind::ipopt: return "ipopt";
@@ -75,6 +84,9 @@ void validate(const SolverOptions& o) {
   require(s.progress_window >= 0, "sqp.progress_window", ">= 0 (0: never)");
   require(s.max_qp_iterations >= 0, "sqp.max_qp_iterations", ">= 0 (0: never)");
   require(s.progress_min_decrease > 0 && s.progress_min_decrease < 1, "sqp.progress_min_decrease", "in (0, 1)");
+  require(s.kinks.model_band > 0 && s.kinks.model_band < 1, "sqp.kinks.model_band", "in (0, 1)");
+  require(s.kinks.test_band > 0 && s.kinks.test_band <= s.kinks.model_band, "sqp.kinks.test_band", "in (0, sqp.kinks.model_band]");
+  require(s.kinks.active_tolerance >= 0, "sqp.kinks.active_tolerance", ">= 0");
 }
 
 SolverOptions seed_table_6_2_options() {

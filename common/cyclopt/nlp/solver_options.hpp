@@ -67,6 +67,12 @@ enum class Termination {
 
 const char* to_string(Termination t);
 
+// Which optimality test a converged point passed: the KKT test, or the nonsmooth (Clarke) test
+// of issue 52 (SqpOptions::kinks; clarke_stationarity.hpp) at a point on kinks of the objective.
+enum class Optimality { none, kkt, nonsmooth_kkt };
+
+const char* to_string(Optimality o);  // "none", "KKT", "nonsmooth KKT"
+
 struct SolverSummary {
   Termination termination = Termination::numerical_failure;
   std::string message;          // solver-specific explanation
@@ -83,9 +89,15 @@ struct SolverSummary {
   Eigen::VectorXd equality_multipliers;   // Lagrange multipliers at x
   Eigen::VectorXd inequality_multipliers;
   Eigen::VectorXd bound_multipliers;      // nu: > 0 at an active upper bound, < 0 at an active lower bound
+  Optimality optimality = Optimality::none;  // of a converged run; none otherwise
+  // With nonsmooth_kkt: sigma_s in [0, w_s] per sample of Evaluation::kinks at x (0 off the kinks the
+  // test used); empty otherwise.
+  Eigen::VectorXd kink_multipliers;
   // Sign convention (both solvers): at a KKT point
   //   grad f + J_eq' equality_multipliers + J_in' inequality_multipliers + bound_multipliers = 0,
-  // inequality_multipliers >= 0 (c_in <= 0); kkt_error is the infinity norm of the left side.
+  // inequality_multipliers >= 0 (c_in <= 0); kkt_error is the infinity norm of the left side. At a
+  // nonsmooth KKT point the left side has + sum_s (kink_multipliers_s - a_s) grad p_s
+  // (kkt_measures.hpp's kinked Lagrangian gradient).
   bool success() const { return termination == Termination::converged || termination == Termination::acceptable; }
 };
 

@@ -12,6 +12,27 @@
 
 namespace cyclopt::nlp {
 
+// Issue 52 (not in the seed): the objective's declared kinked terms (Evaluation::kinks, the walker's
+// f_mech) near their kink are modelled exactly in the subproblems - an epigraph variable per sample
+// (sqp_subproblems.hpp), the QP's multipliers sigma_s in [0, w_s] carrying their curvature into the
+// Hessian model - and a point that fails the KKT test of step 2 is accepted when it passes the
+// nonsmooth (Clarke) test (clarke_stationarity.hpp) instead. Merit function and line search keep
+// the exact objective. Without declared kinks the solver is the seed's.
+struct KinkOptions {
+  bool enabled = false;
+  // Samples within a step of model_band * max(1, |x|_inf) of their kink at first order (|p_s| <=
+  // that times |grad p_s|_inf, kinked_terms.hpp; their partners likewise) get their kink in the QP;
+  // the others keep their smooth branch. The band shrinks where it models slow zero crossings as
+  // kinks (sqp_solver.cpp, shrink_model_band). In (0, 1).
+  double model_band = 1e-6;
+  // Samples within test_band * max(1, |x|_inf) of their kink may use their Clarke subgradients in
+  // the optimality test (the Goldstein-type radius of the nonsmooth test). In (0, model_band].
+  double test_band = 1e-9;
+  // The inequalities with c_i >= -active_tolerance may carry multipliers in the nonsmooth test (the
+  // QP's working set alone would admit rows that are no longer active: no complementarity). >= 0.
+  double active_tolerance = 1e-7;
+};
+
 struct SqpOptions {
   double initial_penalty = 1.0;         // mu_1 of eq. (6.10); > 0
   double penalty_increase = 2.0;        // rho, steps 4, 6, 7; > 1
@@ -65,6 +86,7 @@ struct SqpOptions {
   // The subproblems are solved on the inequalities near activity only (screened_solve.hpp; the
   // result is the full subproblem's): a deviation in cost, not in iterates, from the seed.
   qp::ScreeningOptions screening;
+  KinkOptions kinks;
 };
 
 }  // namespace cyclopt::nlp

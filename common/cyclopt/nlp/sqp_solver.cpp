@@ -2,6 +2,7 @@
 
 #include "cyclopt/nlp/active_set_projections.hpp"
 #include "cyclopt/nlp/cached_evaluator.hpp"
+#include "cyclopt/nlp/clarke_stationarity.hpp"
 #include "cyclopt/nlp/damped_bfgs.hpp"
 #include "cyclopt/nlp/difference_hessian.hpp"
 #include "cyclopt/nlp/kkt_measures.hpp"
@@ -9,6 +10,8 @@
 #include "cyclopt/nlp/sqp_subproblems.hpp"
 #include "cyclopt/nlp/wall_clock.hpp"
 #include "cyclopt/qp/convex_solve.hpp"
+#include "cyclopt/qp/dual_active_set_solver.hpp"
+#include "cyclopt/qp/positive_part_qp.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,14 +40,39 @@ constexpr int kMaxPenaltyIncreases = 60;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kShortStep = 1e-4;
 constexpr int kStalledIterations = 25;
+// An iterate counts as stationary for the kink model when its residual with the model band's
+// kinks is below TolOpt or below this fraction of its residual with the test band's.
+constexpr double kModelStationary = 1e-2;
+
+// The multipliers at an iterate: least squares (6.26) for step 2's KKT test and the BFGS update;
+// with kinks (SqpOptions::kinks) also the Clarke multipliers of the kinked terms near their kink in
+// the QP's band (those of the Lagrangian whose curvature W models) and in the test's band (the
+// nonsmooth KKT test).
+struct IterateMultipliers {
+  LeastSquaresMultipliers ls;
+  ClarkeMultipliers model, test;  // empty without kinks
+};
 
 // A search direction d_k with the penalties that make the l1 merit accept it (steps 3-7).
 struct SearchDirection {
   VectorXd d;
   Penalties mu;
   bool compatible = true;             // the QP (6.7) had a feasible solution
+  NearKinks kinks;                    // the kinked terms the QP modelled (issue 52); none: the smooth model
   std::vector<int> active_inequalities;  // working set of the subproblem solved
+  std::vector<int> held_kinks;           // samples of `kinks` the QP's step holds at their kink
 };
+
+// The samples of `kinks` whose linearised value vanishes (to rounding) at the step d.
+std::vector<int> held_kinks(const KinkedTerms& terms, const NearKinks& kinks, const VectorXd& d) {
+  std::vector<int> held;
+  const double d_norm = d.lpNorm<Eigen::Infinity>();
+  for (int s : kinks.samples) {
+    const double p = terms.values[s], change = terms.jacobian.row(s).dot(d);
+    if (std::abs(p + change) <= 1e-8 * (std::abs(p) + terms.jacobian.row(s).lpNorm<Eigen::Infinity>() * d_norm)) held.push_back(s);
+  }
+  return held;
+}
 
 class SqpRun {
  public:
@@ -62,7 +90,8 @@ class SqpRun {
         trust_radius_(sqp_.initial_trust_radius),
         min_trust_radius_(sqp_.min_trust_radius),
         max_trust_radius_(sqp_.max_trust_radius),
-        scalar_penalty_(sqp_.initial_penalty) {}
+        scalar_penalty_(sqp_.initial_penalty),
+        model_band_(sqp_.kinks.model_band) {}
 
   void run(const VectorXd& x0);
 
@@ -70,6 +99,15 @@ class SqpRun {
   double elapsed() const { return seconds_since(start_); }
   VectorXd project(const VectorXd& x) const { return x.cwiseMax(lower_).cwiseMin(upper_); }
   LinearisationPoint here() const { return {current_, x_, lower_, upper_}; }
+  // The kinked terms are modelled (SqpOptions::kinks) and the problem declares some.
+  bool kinks_on() const { return sqp_.kinks.enabled && !current_.kinks.empty(); }
+  const NearKinks& model_kinks() const { return multipliers_.model.kinks; }
+  IterateMultipliers multipliers_at(const Evaluation& e, const VectorXd& x, const ActiveConstraints& active) const;
+  // The model band shrinks at a point stationary for it but not for the test band (below).
+  void shrink_model_band(const ActiveConstraints& active);
+  // The QP (6.7), boxed by the evaluable step bound, with the kinked terms `kinks` as positive parts
+  // if kinked (sqp_subproblems.hpp).
+  qp::QpSolution solve_subproblem(bool kinked, const NearKinks& kinks);
   void stop(Termination t, std::string message) {
     const bool stopped = evaluator_.stopped();  // the failure that ended the run was a refused evaluation
     summary_.termination = stopped ? Termination::user_stop : t;
@@ -83,7 +121,9 @@ class SqpRun {
   MatrixXd restarted_hessian(const VectorXd& step, const VectorXd& gradient_change);
   // The forward-difference Hessian of the Lagrangian (6.23) at x_k, if it evaluates.
   std::optional<MatrixXd> difference_hessian() {
-    return lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.equality, multipliers_.inequality);
+    if (!kinks_on()) return lagrangian_hessian_by_differences(evaluator_, x_, current_, multipliers_.ls.equality, multipliers_.ls.inequality);
+    const ClarkeMultipliers& y = multipliers_.model;
+    return lagrangian_hessian_by_differences(evaluator_, x_, current_, y.equality, y.inequality, 1.0, y.kinks, y.kink);
   }
   ActiveConstraints active_at(const VectorXd& x, const std::vector<int>& inequalities) const;
   // SqpOptions::progress_window: records `latest` and ends the run (stalled) without progress.
@@ -100,11 +140,13 @@ class SqpRun {
 
   VectorXd x_;
   Evaluation current_;  // at x_, with derivatives
-  LeastSquaresMultipliers multipliers_;
+  IterateMultipliers multipliers_;
   MatrixXd W_;
   qp::WorkingSet working_set_;  // of the last compatible QP (6.7): warm start of the next
+  VectorXd kink_sigma_;         // per sample, the last kinked QP's sigma (NaN where it did not model the sample)
   double trust_radius_, min_trust_radius_, max_trust_radius_;
   double scalar_penalty_;  // max of the previous penalties, eq. (6.10)
+  double model_band_;      // SqpOptions::kinks.model_band, shrunk by shrink_model_band
   double q_reduction_ = 0.0;
   double step_bound_ = kInfinity;  // box on d in (6.7), see line_search
   int short_steps_ = 0;  // consecutive accepted steps below kShortStep
@@ -120,38 +162,114 @@ ActiveConstraints SqpRun::active_at(const VectorXd& x, const std::vector<int>& i
   return a;
 }
 
+IterateMultipliers SqpRun::multipliers_at(const Evaluation& e, const VectorXd& x, const ActiveConstraints& active) const {
+  IterateMultipliers y{least_squares_multipliers(e, active), {}, {}};
+  if (!sqp_.kinks.enabled || e.kinks.empty()) return y;
+  const double tol = options_.constraint_tolerance;
+  y.model = clarke_multipliers(e, active, near_kinks(e.kinks, kink_band(x, model_band_)), x, lower_, upper_, tol);
+  ActiveConstraints tested{{}, active.bounds};  // complementarity: the working set's rows still active
+  for (int i : active.inequalities)
+    if (e.inequalities[i] >= -sqp_.kinks.active_tolerance) tested.inequalities.push_back(i);
+  for (Index i = 0; i < m_in_; ++i)
+    if (e.inequalities[i] >= -sqp_.kinks.active_tolerance &&
+        std::find(active.inequalities.begin(), active.inequalities.end(), i) == active.inequalities.end())
+      tested.inequalities.push_back(static_cast<int>(i));
+  y.test = clarke_multipliers(e, tested, near_kinks(e.kinks, kink_band(x, sqp_.kinks.test_band)), x, lower_, upper_, tol);
+  return y;
+}
+
+// The kinked terms the QP models are those within the model band; a sample there whose power only
+// passes slowly through zero (not held) looks like a kink to the QP, and an iterate can become
+// stationary for that model (kModelStationary) without being a Clarke point of f (not in the seed;
+// the reduction of the radius of Goldstein-type epsilon-subdifferential methods): then the band
+// shrinks tenfold, down to the test band, and the samples outside it keep their smooth branch again.
+void SqpRun::shrink_model_band(const ActiveConstraints& active) {
+  const double tol = options_.optimality_tolerance;
+  while (kinks_on() && model_band_ > sqp_.kinks.test_band && multipliers_.test.residual > tol &&
+         multipliers_.model.residual <= std::max(tol, kModelStationary * multipliers_.test.residual)) {
+    model_band_ = std::max(sqp_.kinks.test_band, 0.1 * model_band_);
+    multipliers_.model = clarke_multipliers(current_, active, near_kinks(current_.kinks, kink_band(x_, model_band_)), x_,
+                                            lower_, upper_, options_.constraint_tolerance);
+    if (options_.print_level > 1) std::printf("sqp        kink model band %.1e\n", model_band_);
+  }
+}
+
 // Step 2: |c_g| <= TolCon, max(0, c_u) <= TolCon, |grad L|_inf <= TolOpt; and multipliers of the
 // right sign (a negative inequality multiplier means the active set is not yet optimal).
+// With kinks, a point that fails this test passes the nonsmooth one when its Clarke residual with
+// the kinked terms of the test band is below TolOpt (clarke_stationarity.hpp).
 bool SqpRun::is_kkt_point() {
+  const LeastSquaresMultipliers& y = multipliers_.ls;
   summary_.constraint_violation = constraint_violation(current_, x_, lower_, upper_);
-  summary_.kkt_error = lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
-                           .lpNorm<Eigen::Infinity>();
+  summary_.kkt_error = lagrangian_gradient(current_, y.equality, y.inequality, y.bound).lpNorm<Eigen::Infinity>();
   const double tol = options_.optimality_tolerance;
-  bool signs = m_in_ == 0 || multipliers_.inequality.minCoeff() >= -tol;
+  bool signs = m_in_ == 0 || y.inequality.minCoeff() >= -tol;
   for (Index i = 0; i < n_ && signs; ++i) {
-    const double nu = multipliers_.bound[i];
+    const double nu = y.bound[i];
     const bool at_lower = x_[i] <= lower_[i] + options_.constraint_tolerance;
     const bool at_upper = x_[i] >= upper_[i] - options_.constraint_tolerance;
     if ((nu < -tol && !at_lower) || (nu > tol && !at_upper)) signs = false;
   }
-  return summary_.constraint_violation <= options_.constraint_tolerance && summary_.kkt_error <= tol && signs;
+  const bool feasible = summary_.constraint_violation <= options_.constraint_tolerance;
+  summary_.optimality = Optimality::none;
+  if (feasible && summary_.kkt_error <= tol && signs) {
+    summary_.optimality = Optimality::kkt;
+    return true;
+  }
+  if (!kinks_on()) return false;
+  const ClarkeMultipliers& clarke = multipliers_.test;
+  summary_.kkt_error = std::min(summary_.kkt_error, clarke.residual);
+  if (!feasible || clarke.residual > tol) return false;
+  summary_.optimality = clarke.kinks.empty() ? Optimality::kkt : Optimality::nonsmooth_kkt;
+  return true;
 }
 
-// Step 3: the QP (6.7); penalties (6.9).
-std::optional<SearchDirection> SqpRun::search_direction() {
-  const qp::QuadraticProgram subproblem = sqp_subproblem(here(), W_);
+qp::QpSolution SqpRun::solve_subproblem(bool kinked, const NearKinks& kinks) {
+  const KinkedSubproblem sub = kinked ? kinked_sqp_subproblem(here(), W_, kinks) : KinkedSubproblem{sqp_subproblem(here(), W_), {}};
+  // The dual of the kinked QP starts where the last one ended: its working set, and per sample its
+  // sigma or, for a sample it did not model, the branch the gradient took (w_s where p_s > 0).
+  qp::PositivePartQpStart start{working_set_, VectorXd(kinks.size())};
+  if (kink_sigma_.size() != current_.kinks.values.size())
+    kink_sigma_ = VectorXd::Constant(current_.kinks.values.size(), std::numeric_limits<double>::quiet_NaN());
+  for (Index k = 0; k < kinks.size(); ++k) {
+    const int s = kinks.samples[static_cast<size_t>(k)];
+    start.sigma[k] = std::isnan(kink_sigma_[s]) ? (current_.kinks.values[s] > 0.0 ? kinks.weights[k] : 0.0) : kink_sigma_[s];
+  }
+  const auto solve = [&](const qp::QuadraticProgram& p) {
+    if (!kinked) return qp::solve_convex(p, sqp_.qp, working_set_, sqp_.screening);
+    const qp::PositivePartQpSolution solution = qp::solve_positive_part_qp(p, sub.terms, sqp_.qp, start);
+    kink_sigma_.setConstant(std::numeric_limits<double>::quiet_NaN());
+    kink_sigma_(kinks.samples) = solution.sigma;
+    return solution.qp;
+  };
   qp::QpSolution qp;
   if (std::isfinite(step_bound_)) {
-    qp::QuadraticProgram boxed = subproblem;
+    qp::QuadraticProgram boxed = sub.qp;
     boxed.lower_bounds = boxed.lower_bounds.cwiseMax(-step_bound_);
     boxed.upper_bounds = boxed.upper_bounds.cwiseMin(step_bound_);
-    qp = qp::solve_convex(boxed, sqp_.qp, working_set_, sqp_.screening);
+    qp = solve(boxed);
     summary_.qp_iterations += qp.iterations;
     if (qp.status == qp::QpStatus::infeasible) step_bound_ = kInfinity;  // the box, not (6.7), may be incompatible
   }
   if (!std::isfinite(step_bound_)) {
-    qp = qp::solve_convex(subproblem, sqp_.qp, working_set_, sqp_.screening);
+    qp = solve(sub.qp);
     summary_.qp_iterations += qp.iterations;
+  }
+  return qp;
+}
+
+// Step 3: the QP (6.7) and the penalties (6.9); with kinks (issue 52) the kinked terms near their
+// kink enter as positive parts. (They are not added lazily where the QP's step crosses a kink, as
+// the l1 relaxation adds slacks: from distant starts the first steps cross most of f_mech's 1200
+// kinks, and modelling those made each QP two orders of magnitude costlier - measured.)
+std::optional<SearchDirection> SqpRun::search_direction() {
+  const bool kinked = kinks_on() && !model_kinks().empty() && qp::is_strictly_convex(W_, sqp_.qp.curvature_tolerance);
+  NearKinks kinks = kinked ? model_kinks() : NearKinks{};
+  qp::QpSolution qp = solve_subproblem(kinked, kinks);
+  if (kinked && qp.status == qp::QpStatus::max_iterations) {  // the seed's QP then: the kinks' model is an addition
+    if (options_.print_level > 0) std::printf("sqp        kinked QP unfinished after %d iterations: QP (6.7) instead\n", qp.iterations);
+    kinks = {};
+    qp = solve_subproblem(false, kinks);
   }
   if (qp.status == qp::QpStatus::infeasible) return relaxed_direction();
   if (qp.status != qp::QpStatus::optimal) {
@@ -160,9 +278,13 @@ std::optional<SearchDirection> SqpRun::search_direction() {
   }
   working_set_ = qp.working_set;
   if (options_.print_level > 1)
-    std::printf("sqp        QP (6.7): %d iterations (%d in phase 1), %zu active\n", qp.iterations, qp.phase_one_iterations,
-                qp.working_set.inequalities.size() + qp.working_set.lower_bounds.size() + qp.working_set.upper_bounds.size());
-  SearchDirection dir{qp.x, {qp.equality_multipliers.cwiseAbs(), qp.inequality_multipliers}, true, qp.working_set.inequalities};
+    std::printf("sqp        QP (6.7): %d iterations (%d in phase 1), %zu active, %lld kinked samples modelled\n", qp.iterations,
+                qp.phase_one_iterations,
+                qp.working_set.inequalities.size() + qp.working_set.lower_bounds.size() + qp.working_set.upper_bounds.size(),
+                static_cast<long long>(kinks.size()));
+  SearchDirection dir{qp.x, {qp.equality_multipliers.cwiseAbs(), qp.inequality_multipliers}, true, std::move(kinks),
+                      qp.working_set.inequalities, {}};
+  dir.held_kinks = held_kinks(current_.kinks, dir.kinks, dir.d);
   const double floor = sqp_.relative_min_penalty * dir.mu.max();  // eq. (6.9a/b)
   dir.mu.equality = dir.mu.equality.cwiseMax(floor);
   dir.mu.inequality = dir.mu.inequality.cwiseMax(floor);
@@ -205,7 +327,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
     if (options_.print_level > 1)
       std::printf("sqp        relaxed QP (6.13), mu = %.3e: %d iterations, %lld variables; LP (6.14): %d iterations\n", mu,
                   relaxed.iterations, static_cast<long long>(relaxed.x.size()), lp.iterations);
-    SearchDirection dir{relaxed.x.head(n_), Penalties::uniform(mu, m_eq_, m_in_), false, relaxed.working_set.inequalities};
+    SearchDirection dir{relaxed.x.head(n_), Penalties::uniform(mu, m_eq_, m_in_), false, {}, relaxed.working_set.inequalities, {}};
     const bool enough_violation_decrease = m0 - linearized_violation(current_, dir.d) >= sqp_.epsilon1 * lp_decrease;  // step 6
     const bool enough_model_decrease = l1_model(current_, W_, zero, dir.mu) - l1_model(current_, W_, dir.d, dir.mu) >=
                                        sqp_.epsilon2 * mu * lp_decrease;  // step 7
@@ -217,7 +339,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
 // Steps 8-13. Returns x_{k+1}, or nothing (termination set) if no acceptable point is found.
 std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
   const VectorXd zero = VectorXd::Zero(n_);
-  q_reduction_ = l1_model(current_, W_, zero, dir.mu) - l1_model(current_, W_, dir.d, dir.mu);  // step 8
+  q_reduction_ = l1_model(current_, W_, zero, dir.mu, dir.kinks) - l1_model(current_, W_, dir.d, dir.mu, dir.kinks);  // step 8
   const double phi0 = l1_merit(current_, dir.mu);
   const double noise = kMeritNoiseUlps * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(phi0));
   const double tau = sqp_.backtracking, eta = sqp_.armijo;
@@ -240,7 +362,9 @@ std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
     step_bound_ = beta < 1.0 ? beta * dir.d.lpNorm<Eigen::Infinity>() : 2.0 * step_bound_;
   // Step 10: merit test (6.15).
   if (phi0 - l1_merit(evaluator_.evaluation(), dir.mu) >= eta * beta * q_reduction_ - noise) return project(x_ + d);
-  // Step 11: EQP projection (6.16)-(6.18) at x_k + d_k, only if the QP (6.7) was compatible.
+  // Step 11: EQP projection (6.16)-(6.18) at x_k + d_k, only if the QP (6.7) was compatible; with
+  // kinks also onto the kinks the QP held (issue 52): their second-order error would otherwise cost
+  // positive work the model did not predict, the Maratos effect of a kink.
   VectorXd d_soc = zero;
   if (dir.compatible && sqp_.second_order_correction && evaluator_.evaluate(project(x_ + d), true).ok) {
     const Evaluation& trial = evaluator_.evaluation();
@@ -248,7 +372,7 @@ std::optional<VectorXd> SqpRun::line_search(const SearchDirection& dir) {
     for (Index i = 0; i < m_in_; ++i)
       if (trial.inequalities[i] > 0.0 && std::find(active.begin(), active.end(), i) == active.end())
         active.push_back(static_cast<int>(i));
-    d_soc = second_order_correction(trial, active);
+    d_soc = second_order_correction(trial, active, dir.held_kinks);
     if (!evaluates(x_ + d + d_soc)) d_soc = zero;
   }
   // Step 12: backtracking on (6.19); failing evaluations count as "not acceptable".
@@ -277,7 +401,8 @@ void SqpRun::run(const VectorXd& x0) {
   std::vector<int> initially_active;
   for (Index i = 0; i < m_in_; ++i)
     if (current_.inequalities[i] >= -options_.constraint_tolerance) initially_active.push_back(static_cast<int>(i));
-  multipliers_ = least_squares_multipliers(current_, active_at(x_, initially_active));
+  multipliers_ = multipliers_at(current_, x_, active_at(x_, initially_active));
+  shrink_model_band(active_at(x_, initially_active));
   bool identity_start = true;
 
   for (int k = 1;; ++k) {
@@ -314,7 +439,7 @@ void SqpRun::run(const VectorXd& x0) {
     if (k == 1) {  // W_1 after the test of step 2: a start at a KKT point (a continuation's first point) needs none
       std::optional<MatrixXd> hessian;  // of the Lagrangian (6.23)
       if (sqp_.lagrangian_hessian)
-        hessian = sqp_.lagrangian_hessian(x_, multipliers_.equality, multipliers_.inequality);
+        hessian = sqp_.lagrangian_hessian(x_, multipliers_.ls.equality, multipliers_.ls.inequality);
       else if (sqp_.difference_hessian)
         hessian = difference_hessian();
       identity_start = !hessian;
@@ -347,10 +472,16 @@ void SqpRun::run(const VectorXd& x0) {
       break;
     }
     const Evaluation& e = evaluator_.evaluation();
-    LeastSquaresMultipliers y = least_squares_multipliers(e, active_at(*next, dir->active_inequalities));
-    // Step 17: y_k of (6.20) with the new multipliers at both points (bound terms cancel).
-    const VectorXd gradient_change = lagrangian_gradient(e, y.equality, y.inequality, {}) -
-                                     lagrangian_gradient(current_, y.equality, y.inequality, {});
+    IterateMultipliers y = multipliers_at(e, *next, active_at(*next, dir->active_inequalities));
+    // Step 17: y_k of (6.20) with the new multipliers at both points (bound terms cancel); with
+    // kinks the Lagrangian of the kinked terms' multipliers, whose gradient does not jump at a kink.
+    const ClarkeMultipliers& yk = y.model;
+    const VectorXd gradient_change =
+        sqp_.kinks.enabled && !e.kinks.empty()
+            ? VectorXd(lagrangian_gradient(e, yk.equality, yk.inequality, {}, yk.kinks, yk.kink) -
+                       lagrangian_gradient(current_, yk.equality, yk.inequality, {}, yk.kinks, yk.kink))
+            : VectorXd(lagrangian_gradient(e, y.ls.equality, y.ls.inequality, {}) -
+                       lagrangian_gradient(current_, y.ls.equality, y.ls.inequality, {}));
     short_steps_ = step_norm < kShortStep * std::max(1.0, x_.lpNorm<Eigen::Infinity>()) ? short_steps_ + 1 : 0;
     const bool stalled = short_steps_ == kStalledIterations;
     if (k == 1 && identity_start)
@@ -361,17 +492,20 @@ void SqpRun::run(const VectorXd& x0) {
     x_ = *next;
     current_ = e;
     multipliers_ = std::move(y);
+    shrink_model_band(active_at(x_, dir->active_inequalities));
     if (stalled) W_ = restarted_hessian(step, gradient_change);
     else if (sqp_.difference_hessian && sqp_.difference_hessian_every > 0 && k % sqp_.difference_hessian_every == 0)
       if (const auto H = difference_hessian()) W_ = clamped_hessian(*H);  // (6.24)
     summary_.iterations = k;
-    IterationReport report{k, current_.objective, constraint_violation(current_, x_, lower_, upper_),
-                           lagrangian_gradient(current_, multipliers_.equality, multipliers_.inequality, multipliers_.bound)
-                               .lpNorm<Eigen::Infinity>(),
-                           step_norm, elapsed()};
+    const LeastSquaresMultipliers& ls = multipliers_.ls;
+    double kkt_error = lagrangian_gradient(current_, ls.equality, ls.inequality, ls.bound).lpNorm<Eigen::Infinity>();
+    if (kinks_on()) kkt_error = std::min(kkt_error, multipliers_.test.residual);
+    IterationReport report{k, current_.objective, constraint_violation(current_, x_, lower_, upper_), kkt_error, step_norm,
+                           elapsed()};
     if (options_.print_level > 0)
-      std::printf("sqp %4d  f %+.10e  viol %.3e  kkt %.3e  step %.3e  %s\n", k, report.objective, report.constraint_violation,
-                  report.kkt_error, report.step_norm, dir->compatible ? "" : "(l1-relaxed)");
+      std::printf("sqp %4d  f %+.10e  viol %.3e  kkt %.3e  step %.3e  %s%s\n", k, report.objective, report.constraint_violation,
+                  report.kkt_error, report.step_norm, dir->compatible ? "" : "(l1-relaxed)",
+                  model_kinks().empty() ? "" : (" kinks " + std::to_string(model_kinks().size())).c_str());
     if (options_.on_iteration && !options_.on_iteration(report)) {
       is_kkt_point();
       stop(Termination::user_stop, "stopped by on_iteration");
@@ -423,9 +557,19 @@ bool SqpRun::stalled_over_window(const IterationReport& latest) {
 void SqpRun::finish() {
   summary_.x = x_;
   summary_.objective = current_.objective;
-  summary_.equality_multipliers = multipliers_.equality;
-  summary_.inequality_multipliers = multipliers_.inequality;
-  summary_.bound_multipliers = multipliers_.bound;
+  if (summary_.termination != Termination::converged) summary_.optimality = Optimality::none;
+  if (summary_.optimality == Optimality::nonsmooth_kkt) {
+    const ClarkeMultipliers& y = multipliers_.test;
+    summary_.equality_multipliers = y.equality;
+    summary_.inequality_multipliers = y.inequality;
+    summary_.bound_multipliers = y.bound;
+    summary_.kink_multipliers = VectorXd::Zero(current_.kinks.values.size());
+    summary_.kink_multipliers(y.kinks.samples) = y.kink;
+  } else {
+    summary_.equality_multipliers = multipliers_.ls.equality;
+    summary_.inequality_multipliers = multipliers_.ls.inequality;
+    summary_.bound_multipliers = multipliers_.ls.bound;
+  }
   summary_.wall_seconds = elapsed();
 }
 

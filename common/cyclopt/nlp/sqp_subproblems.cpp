@@ -95,6 +95,13 @@ qp::QuadraticProgram sqp_subproblem(const LinearisationPoint& at, const MatrixXd
   return qp;
 }
 
+KinkedSubproblem kinked_sqp_subproblem(const LinearisationPoint& at, const MatrixXd& W, const NearKinks& kinks) {
+  const KinkedTerms& k = at.evaluation.kinks;
+  KinkedSubproblem s{sqp_subproblem(at, W), {kink_jacobian(k, kinks), -k.values(kinks.samples), kinks.weights}};
+  s.qp.gradient -= s.terms.matrix.transpose() * kinks.slopes;
+  return s;
+}
+
 qp::QpSolution solve_l1_relaxed_subproblem(const LinearisationPoint& at, const MatrixXd& W, double mu,
                                           const qp::ActiveSetOptions& options, const qp::ScreeningOptions& screening,
                                           const qp::WorkingSet& warm_start) {

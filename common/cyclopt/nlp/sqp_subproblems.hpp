@@ -5,6 +5,7 @@
 
 #include "cyclopt/nlp/problem.hpp"
 #include "cyclopt/qp/active_set_solver.hpp"
+#include "cyclopt/qp/positive_part_qp.hpp"
 #include "cyclopt/qp/quadratic_program.hpp"
 #include "cyclopt/qp/screened_solve.hpp"
 
@@ -22,6 +23,21 @@ struct LinearisationPoint {
 
 // eq. (6.7): min grad f d + 1/2 d'Wd s.t. J_g d + c_g = 0, J_u d + c_u <= 0.
 qp::QuadraticProgram sqp_subproblem(const LinearisationPoint& at, const Eigen::MatrixXd& W);
+
+// Issue 52 (not in the seed): (6.7) with the kinked terms near their kink K (kinked_terms.hpp)
+// modelled as what they are - l1 terms, as (6.13) treats violated constraints:
+//
+//   min (grad f - sum_K a_s grad p_s)' d + 1/2 d'Wd + sum_K w_s max(p_s + grad p_s' d, 0)  s.t. (6.7)'s rows,
+//
+// i.e. with the issue's elastic variables t_s >= p_s + grad p_s' d, t_s >= 0 at cost w_s t_s, whose
+// multipliers sigma_s in [0, w_s] say which samples do positive work. The samples outside K keep their
+// smooth branch (their slopes stay in the gradient). Solved by qp/positive_part_qp.hpp (W positive definite).
+struct KinkedSubproblem {
+  qp::QuadraticProgram qp;       // (6.7) with the gradient of the smooth remainder
+  qp::PositivePartTerms terms;   // a = grad p_s, b = -p_s, weights w_s
+};
+
+KinkedSubproblem kinked_sqp_subproblem(const LinearisationPoint& at, const Eigen::MatrixXd& W, const NearKinks& kinks);
 
 // The l1 programs (6.13)/(6.14) are solved exactly but with fewer variables: slacks t start on
 // the inequalities violated at x only and are added to a hard row only when its multiplier

@@ -1,5 +1,7 @@
 #include "cyclopt/qp/dual_active_set_solver.hpp"
 
+#include "cyclopt/qp/working_set_refinement.hpp"
+
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
@@ -124,48 +126,23 @@ class WorkingSetFactorization {
   MatrixXd J_, R_;
 };
 
-// Iterative refinement on the final working set. The method's null-space steps z = J2 J2' n keep
-// the working rows only to ~cond(H) eps |x|: with the SQP's W_1 of (6.24), whose eigenvalues are
-// clamped at sqrt(eps) lambda_max, that is ~1e-7, and a QP step that leaves the linearised
-// constraints violated by that much cannot bring the SQP's violation below it. Newton corrections
-// of the equality-constrained KKT system of the working set,
-//   H x + g - N u = 0,   n_j' x = -sign_j b_j   (n_j = -sign_j a_j, the working normals),
-// by a full-pivot LU of [H -N; N' 0], restore the rows to rounding. A correction is kept only if it
-// lowers the working rows' residual, moves x and the multipliers by at most kMaxCorrection relative,
-// and leaves every other row within the feasibility tolerance.
-constexpr double kMaxCorrection = 1e-4;
-void refine_on_working_set(const QuadraticProgram& qp, const Rows& rows, const std::vector<char>& active, double tol,
+// Iterative refinement on the final working set (working_set_refinement.hpp): the working
+// normals n_j = -sign_j a_j with c_j = -sign_j b_j; every other row within the feasibility tolerance.
+void refine_dual_solution(const QuadraticProgram& qp, const Rows& rows, const std::vector<char>& active, double tol,
                            WorkingSetFactorization& ws, VectorXd& x) {
   const Index n = x.size(), q = ws.size();
   if (q == 0) return;
   MatrixXd N(n, q);
   VectorXd c(q);
   for (Index k = 0; k < q; ++k) N.col(k) = ws.normal(k), c[k] = -ws.sign(k) * rows.b[ws.row(k)];
-  MatrixXd K = MatrixXd::Zero(n + q, n + q);
-  K.topLeftCorner(n, n) = qp.hessian;
-  K.topRightCorner(n, q) = -N;
-  K.bottomLeftCorner(q, n) = N.transpose();
-  const Eigen::FullPivLU<MatrixXd> lu(K);
-  if (!lu.isInvertible()) return;  // dependent working normals: keep the method's solution
-  auto working_residual = [&](const VectorXd& z) { return (N.transpose() * z - c).lpNorm<Eigen::Infinity>(); };
-  for (int pass = 0; pass < 2; ++pass) {
-    VectorXd r(n + q);
-    r.head(n) = -(qp.hessian * x + qp.gradient - N * ws.multipliers());
-    r.tail(q) = c - N.transpose() * x;
-    const VectorXd delta = lu.solve(r);
-    // A correction of the drift is tiny; a large one comes from a nearly singular KKT matrix.
-    if (!delta.allFinite() || delta.head(n).lpNorm<Eigen::Infinity>() > kMaxCorrection * (1.0 + x.lpNorm<Eigen::Infinity>()) ||
-        delta.tail(q).lpNorm<Eigen::Infinity>() > kMaxCorrection * (1.0 + ws.multipliers().lpNorm<Eigen::Infinity>()))
-      return;
-    const VectorXd refined = x + delta.head(n);
-    if (!(working_residual(refined) < working_residual(x))) return;
-    const VectorXd slack = rows.b - rows.a * refined;
+  const auto others_feasible = [&](const VectorXd& z) {
+    const VectorXd slack = rows.b - rows.a * z;
     for (Index k = 0; k < rows.a.rows(); ++k)
       if (!active[static_cast<size_t>(k)] && rows.origin[static_cast<size_t>(k)].kind != RowKind::equality && slack[k] < -tol)
-        return;
-    x = refined;
-    ws.multipliers() += delta.tail(q);
-  }
+        return false;
+    return true;
+  };
+  refine_on_working_set(qp.hessian, qp.gradient, N, c, others_feasible, x, ws.multipliers());
 }
 
 }  // namespace
@@ -284,7 +261,7 @@ QpSolution solve_dual_active_set(const QuadraticProgram& qp, const ActiveSetOpti
       if (scaled < worst) worst = scaled, p = k;
     }
     if (p < 0) {
-      refine_on_working_set(qp, rows, active, tol, ws, sol.x);
+      refine_dual_solution(qp, rows, active, tol, ws, sol.x);
       return finish(QpStatus::optimal, "optimal");
     }
     if (!make_active(static_cast<int>(p))) return finish(failure_status, failure);

@@ -64,6 +64,10 @@ bool derivative_pass(const WalkerModel<double>& model, const BezierBasis& basis,
   copy_gradient(gd.floquet, start, count, d.floquet);
   for (int r = 0; r < gd.inequalities.size(); ++r)
     d.inequalities.block(r, start, 1, count) = gd.inequalities(r).d.head(count).transpose();
+  const Eigen::Index points = gd.joint_power.cols();
+  for (Eigen::Index j = 0; j < gd.joint_power.rows(); ++j)
+    for (Eigen::Index i = 0; i < points; ++i)
+      d.joint_power.block(j * points + i, start, 1, count) = gd.joint_power(j, i).d.head(count).transpose();
   return true;
 }
 
@@ -119,6 +123,7 @@ GaitEvaluation GaitEvaluator::derivatives(const Eigen::VectorXd& x, const GaitOp
                                   &d.mean_speed, &d.floquet})
     row->setZero(n);
   d.inequalities.setZero(out.gait.inequalities.size(), n);
+  d.joint_power.setZero(out.gait.joint_power.size(), n);
   GaitOptions light = options;
   light.keep_trajectories = false;
   const bool reference = path == DerivativePath::reference;

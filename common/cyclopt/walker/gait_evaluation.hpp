@@ -21,6 +21,7 @@ inline constexpr int kJacobianChunk = 8;
 struct GaitDerivatives {
   Eigen::RowVectorXd objective, f_mech, f_usq, speed_equality, step_length, step_period, mean_speed, floquet;
   Eigen::MatrixXd inequalities;  // (10P+3) x directions
+  Eigen::MatrixXd joint_power;   // (n_b P) x directions, row j P + i: joint j at grid point i (PeriodicGait::joint_power)
   // All rows in the order above: 8 scalar rows, then the inequalities.
   Eigen::MatrixXd stacked() const;
 };

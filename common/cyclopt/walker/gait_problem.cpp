@@ -1,5 +1,6 @@
 #include "cyclopt/walker/gait_problem.hpp"
 
+#include "cyclopt/walker/power_kinks.hpp"
 
 #include <limits>
 #include <optional>
@@ -154,6 +155,12 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
       out.inequality_jacobian.block(nc, gait_count_ + k, rows, 1) = -foot_rows_.A.col(f);
       if (toe_margin_) out.inequality_jacobian(nc + rows, gait_count_ + k) = -toe.d(f);
     }
+  }
+  if (declares_kinks()) {
+    const double weight_step = ev.model().total_mass * ev.model().constants.gravity * e.gait.step_length;
+    out.kinks = mechanical_power_kinks(e.gait.joint_power, e.derivatives.joint_power, e.gait.interval_duration, weight_step);
+  } else {
+    out.kinks = {};
   }
   // Degenerate feet (an edge of the generating polygon at the ankle vanishing with the whole sole
   // on the ankle's level, section 10.2's stilt) can leave the gait real but its derivatives 0/0:

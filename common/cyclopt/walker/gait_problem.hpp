@@ -65,6 +65,13 @@ class GaitProblem : public nlp::Problem {
   // objective moves much under refinement exploits the quadrature (studies/design_class.hpp).
   double refined_objective(const Eigen::VectorXd& z, int factor) const;
   const GaitProblemOptions& options() const { return options_; }
+  // Evaluations with derivatives carry f_mech's kinked terms (power_kinks.hpp) for solvers that model
+  // them (nlp::KinkOptions): with the seed's rule for f_mech - the trapezoid rule with zero crossing,
+  // no positive_power_band (which rounds the kinks away).
+  bool declares_kinks() const {
+    return options_.objective == Objective::mechanical && options_.quadrature == Quadrature::trapezoid &&
+           options_.positive_power_band == 0.0;
+  }
 
  private:
   GaitOptions gait_options(bool trajectories) const;

@@ -73,6 +73,8 @@ struct PeriodicGait {
   T objective{}, f_mech{}, f_usq{};
   T speed_equality{};          // c_g (eq. 5.103)
   Vector<T> inequalities;      // c_u <= 0 (eq. 5.104); forces scaled by m g, impulses by m (1 m/s)
+  Matrix<T> joint_power;       // u_j q_dot_j (W) whose positive part f_mech integrates (5.100): joints x grid points
+  Vector<T> interval_duration; // t_i+1 - t_i (s): the intervals of the trapezoid rule in time (P - 1)
   T step_length{}, step_period{}, mean_speed{};
   T floquet{};                 // Lambda (eq. 5.89)
   T zeta_plus{};               // zeta+ (eq. 5.85)
@@ -249,6 +251,8 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
     e_usq = cumulative_integral(usq_per_theta, h, opt.quadrature)(P - 1);
   }
   g.f_mech = e_mech / weight_step;
+  g.joint_power = std::move(power);
+  g.interval_duration = std::move(dt);
   g.f_usq = e_usq / weight_step;
   g.objective = opt.objective == Objective::mechanical ? g.f_mech : g.f_usq;
 
