@@ -8,10 +8,12 @@
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/gait_animation.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/speed_charts.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
+#include "cyclopt/records/sweep_records.hpp"
 #include "cyclopt/jobs/walker/walker_points.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
@@ -190,6 +192,25 @@ TEST_F(WalkerFigures, EveryKindRendersValidNonTrivialPngAndSvg) {
     EXPECT_GT(img.count(palette(0)), 150) << name;
     EXPECT_GT(img.count(palette(1)), 150) << name;
   }
+}
+
+TEST_F(WalkerFigures, ASweepWithSeveralSeedsShadesItsSpreadOnTheCostOfTransport) {
+  nlohmann::json doc = document_of(2, *hmt_);
+  EXPECT_TRUE(cost_of_transport_chart({walker_job_results(doc)}).bands.empty()) << "one seed: no band";
+  records::SweepBestRecord best;
+  best.closure = "closed";
+  best.seed_spread = 0.1;
+  for (nlohmann::json& s : doc["solutions"]) s["values"].update(nlohmann::json(best));
+  const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(1, *point_feet_)), walker_job_results(doc)};
+  const LineChart chart = cost_of_transport_chart(jobs);
+  ASSERT_EQ(chart.bands.size(), 1u) << "only the job with several seeds";
+  const Band& band = chart.bands[0];
+  EXPECT_EQ(band.low, chart.series[1].y);
+  ASSERT_EQ(band.high.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_DOUBLE_EQ(band.high[i], 1.1 * band.low[i]);
+  EXPECT_EQ(band.color.r, palette(1).r) << "the band has its series' colour";
+  EXPECT_NE(chart.series[1].label.find("spread over the seeds"), std::string::npos);
+  EXPECT_EQ(chart.series[0].label.find("spread"), std::string::npos);
 }
 
 TEST_F(WalkerFigures, StroboscopeShowsGroundContactPointsFeetAndClearance) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace cyclopt::plot {
@@ -30,13 +31,17 @@ std::string no_converged_gait(const std::vector<WalkerJobResults>& jobs) {
   return "no converged gait (" + why + ")";
 }
 
-// One series per job of value(point) over the mean speed of the converged points.
+// One series per job of value(point) over the mean speed of the converged points; with
+// band_high, a band in the series' colour from value up to band_high where that is given.
 LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesStyle& axes,
-                        const std::function<double(const GaitPoint&)>& value) {
+                        const std::function<double(const GaitPoint&)>& value,
+                        const std::function<std::optional<double>(const GaitPoint&)>& band_high = nullptr,
+                        const std::string& band_label = "") {
   LineChart chart;
   chart.axes = axes;
   for (const WalkerJobResults& job : jobs) {
     Series s{job.label, {}, {}, true, false, std::nullopt};
+    Band band;
     std::vector<std::string> omitted;
     for (const GaitPoint& p : job.points) {
       if (!p.converged) {
@@ -45,9 +50,20 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
       }
       s.x.push_back(p.gait.mean_speed);
       s.y.push_back(value(p));
+      if (const std::optional<double> high = band_high ? band_high(p) : std::nullopt) {
+        band.x.push_back(s.x.back());
+        band.low.push_back(s.y.back());
+        band.high.push_back(*high);
+      }
     }
     s.label = with_omitted(s.label, omitted);
-    if (!s.x.empty()) chart.series.push_back(std::move(s));
+    if (s.x.empty()) continue;
+    if (!band.x.empty()) {
+      band.color = palette(static_cast<int>(chart.series.size()));
+      chart.bands.push_back(std::move(band));
+      s.label += band_label;
+    }
+    chart.series.push_back(std::move(s));
   }
   if (chart.series.empty()) throw std::invalid_argument(no_converged_gait(jobs));
   return chart;
@@ -74,7 +90,13 @@ LineChart cost_of_transport_chart(const std::vector<WalkerJobResults>& jobs) {
   LineChart chart = per_job_chart(jobs,
                                   {"Cost of transport of the optimal gaits (seed 001 Fig. 9.19a)", "mean speed v (m/s)",
                                    "mechanical cost of transport f_mech (eq. 5.102) (-)", true},
-                                  [](const GaitPoint& p) { return p.gait.f_mech; });
+                                  [](const GaitPoint& p) { return p.gait.f_mech; },
+                                  // several seeds: up to the worst seed's own best, f * (1 + spread)
+                                  [](const GaitPoint& p) -> std::optional<double> {
+                                    if (!p.seed_spread) return std::nullopt;
+                                    return p.gait.f_mech * (1.0 + *p.seed_spread);
+                                  },
+                                  "; shaded: spread over the seeds");
   start_at_zero(chart);
   return chart;
 }

@@ -1,6 +1,7 @@
 #include "cyclopt/plot/walker_job_results.hpp"
 
 #include "cyclopt/io/foot_spec_json.hpp"
+#include "cyclopt/records/sweep_records.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
 
 #include <cmath>
@@ -36,6 +37,15 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
   r.points = gait_points(doc, 0);
+  if (task == "sweep") {  // curve 0 holds the best rows, in the order gait_points read them
+    std::size_t k = 0;
+    for (const nlohmann::json& s : doc.at("solutions")) {
+      if (s.value("curve", 0) != 0) continue;
+      const nlohmann::json& values = s.at("values");
+      if (values.contains("seed_spread")) r.points.at(k).seed_spread = values.get<records::SweepBestRecord>().seed_spread;
+      ++k;
+    }
+  }
   return r;
 }
 

@@ -26,6 +26,9 @@ struct GaitPoint {
   records::GaitRecord gait;      // values.gait (not real when the point has none)
   std::optional<records::GaitTrajectoryRecord> trajectory;  // none when none was stored
   std::optional<records::KktSensitivitiesRecord> sensitivities;  // values.sensitivities of an optimum
+  // A sweep searched with several seeds: (max - min) / min of the seeds' own best f here
+  // (records::SweepBestRecord::seed_spread).
+  std::optional<double> seed_spread;
 };
 
 // The walker a job's points were solved on, from its setup record.
