@@ -202,6 +202,10 @@ TEST(JobSchema, NamesTheFieldItRefuses) {
   EXPECT_EQ(field(s), "multistart.starts");
   s = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "1:0.1:1.2"}, {"feet", {"point", 3}}};
   EXPECT_EQ(field(s), "feet[1]");
+  s = {{"scene", "walker"}, {"task", "sweep"}, {"foot", "point"}, {"speeds", "1:0.1:1.2"}, {"multistart", {{"seeds", {1, 2, 3}}}}};
+  EXPECT_EQ(field(s), "accepted");
+  s["multistart"]["seeds"] = {1, 2, 1};
+  EXPECT_EQ(field(s), "multistart.seeds");
 }
 
 // The validator itself, on small schemas: each keyword can refuse.
@@ -237,7 +241,8 @@ TEST(JsonSchemaValidator, EachKeywordRefuses) {
         spec(R"({"x": "1"})"));
   std::ofstream(dir / "other.json") << R"({"properties": {"y": {"maximum": 3}}})";
   check(spec(R"({"properties": {"x": {"$ref": "other.json#/properties/y"}}})"), spec(R"({"x": 3})"), spec(R"({"x": 4})"));
-  std::ofstream(dir / "s.json") << R"({"uniqueItems": true})";
+  check(spec(R"({"uniqueItems": true})"), json::array({1, 2}), json::array({1, 2, 1}));
+  std::ofstream(dir / "s.json") << R"({"multipleOf": 2})";
   EXPECT_THROW(JsonSchemaValidator(dir, "s.json").errors(1), std::invalid_argument);  // outside the subset
   fs::remove_all(dir);
 }

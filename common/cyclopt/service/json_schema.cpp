@@ -25,7 +25,7 @@ const std::set<std::string>& assertions() {
       "items",    "minItems", "maxItems", "minimum",         "maximum",          "exclusiveMinimum",
       "exclusiveMaximum",     "minLength", "maxLength",      "pattern",          "allOf",
       "anyOf",    "oneOf",    "not",     "if",               "then",             "else",
-      "$ref",     "propertyNames"};
+      "$ref",     "propertyNames", "uniqueItems"};
   return k;
 }
 
@@ -147,6 +147,10 @@ void JsonSchemaValidator::check(const json& schema, const std::string& file, con
       fail("must have at least " + schema["minItems"].dump() + " items");
     if (schema.contains("maxItems") && v.size() > schema["maxItems"].get<std::size_t>())
       fail("must have at most " + schema["maxItems"].dump() + " items");
+    if (schema.value("uniqueItems", false))
+      for (std::size_t i = 1; i < v.size(); ++i)
+        for (std::size_t k = 0; k < i; ++k)
+          if (v[i] == v[k]) fail("must have unique items, item " + std::to_string(i) + " repeats item " + std::to_string(k));
     if (schema.contains("items"))
       for (std::size_t i = 0; i < v.size(); ++i) check(schema["items"], file, v[i], child(where, std::to_string(i)), out);
   }
