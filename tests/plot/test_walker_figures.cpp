@@ -209,7 +209,7 @@ TEST_F(WalkerFigures, ASweepWithSeveralSeedsShadesItsSpreadOnTheCostOfTransport)
   ASSERT_EQ(band.high.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) EXPECT_DOUBLE_EQ(band.high[i], 1.1 * band.low[i]);
   EXPECT_EQ(band.color.r, palette(1).r) << "the band has its series' colour";
-  EXPECT_NE(chart.series[1].label.find("spread over the seeds"), std::string::npos);
+  EXPECT_NE(chart.series[1].label.find("spread over the seeds, at most 10.0 %"), std::string::npos) << chart.series[1].label;
   EXPECT_EQ(chart.series[0].label.find("spread"), std::string::npos);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <optional>
@@ -36,7 +37,7 @@ std::string no_converged_gait(const std::vector<WalkerJobResults>& jobs) {
 LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesStyle& axes,
                         const std::function<double(const GaitPoint&)>& value,
                         const std::function<std::optional<double>(const GaitPoint&)>& band_high = nullptr,
-                        const std::string& band_label = "") {
+                        const std::function<std::string(const Band&)>& band_label = nullptr) {
   LineChart chart;
   chart.axes = axes;
   for (const WalkerJobResults& job : jobs) {
@@ -60,8 +61,8 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
     if (s.x.empty()) continue;
     if (!band.x.empty()) {
       band.color = palette(static_cast<int>(chart.series.size()));
+      if (band_label) s.label += band_label(band);
       chart.bands.push_back(std::move(band));
-      s.label += band_label;
     }
     chart.series.push_back(std::move(s));
   }
@@ -96,7 +97,13 @@ LineChart cost_of_transport_chart(const std::vector<WalkerJobResults>& jobs) {
                                     if (!p.seed_spread) return std::nullopt;
                                     return p.gait.f_mech * (1.0 + *p.seed_spread);
                                   },
-                                  "; shaded: spread over the seeds");
+                                  [](const Band& b) {
+                                    double widest = 0.0;
+                                    for (std::size_t i = 0; i < b.x.size(); ++i) widest = std::max(widest, b.high[i] / b.low[i] - 1.0);
+                                    char text[80];
+                                    std::snprintf(text, sizeof text, "; shaded: spread over the seeds, at most %.1f %%", 100.0 * widest);
+                                    return std::string(text);
+                                  });
   start_at_zero(chart);
   return chart;
 }
