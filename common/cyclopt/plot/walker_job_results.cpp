@@ -37,15 +37,6 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
   r.points = gait_points(doc, 0);
-  if (task == "sweep") {  // curve 0 holds the best rows, in the order gait_points read them
-    std::size_t k = 0;
-    for (const nlohmann::json& s : doc.at("solutions")) {
-      if (s.value("curve", 0) != 0) continue;
-      const nlohmann::json& values = s.at("values");
-      if (values.contains("seed_spread")) r.points.at(k).seed_spread = values.get<records::SweepBestRecord>().seed_spread;
-      ++k;
-    }
-  }
   return r;
 }
 
@@ -54,6 +45,7 @@ std::vector<GaitPoint> gait_points(const nlohmann::json& doc, int curve) {
   const nlohmann::json none = nlohmann::json::array();
   for (const nlohmann::json& t : doc.contains("trajectories") ? doc["trajectories"] : none)
     if (t.value("format", "") == "json" && t.value("curve", 0) == curve) trajectories[t.value("point", 0)] = &t.at("data");
+  const bool sweep_best_rows = doc.value("task", "") == "sweep" && curve == 0;
   std::vector<GaitPoint> points;
   for (const nlohmann::json& s : doc.contains("solutions") ? doc["solutions"] : none) {
     if (s.value("curve", 0) != curve) continue;
@@ -64,6 +56,9 @@ std::vector<GaitPoint> gait_points(const nlohmann::json& doc, int curve) {
     if (values.gait) p.gait = *values.gait;
     p.converged = records::solved(values);
     p.sensitivities = values.sensitivities;
+    // A sweep's best row (curve 0) with several seeds also holds its SweepBestRecord.
+    if (sweep_best_rows && s["values"].contains("seed_spread"))
+      p.seed_spread = s["values"].get<records::SweepBestRecord>().seed_spread;
     const auto t = trajectories.find(s.value("point", 0));
     if (t != trajectories.end()) p.trajectory = t->second->get<records::GaitTrajectoryRecord>();
     points.push_back(std::move(p));
