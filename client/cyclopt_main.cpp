@@ -16,6 +16,7 @@
 #include "cyclopt/plot/sensitivity_figures.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
+#include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/service/common_job_fields.hpp"
@@ -25,6 +26,7 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt_channels.hpp"
+#include "point_table.hpp"
 #include "progress_line.hpp"
 #include "row_table.hpp"
 #include "service_client.hpp"
@@ -114,7 +116,7 @@ results database file directly (read-only) when given --db FILE.
 Output of status, list, query: aligned table (times in ISO 8601 UTC), or --wide / --csv / --json.
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
 --key-file FILE (sign requests and believe only answers signed with this key; default
-$CYCLOPT_KEY_FILE; README, Authentication), --version.
+$CYCLOPT_KEY_FILE; docs/service.md, Authentication), --version.
 A spec is checked locally (JSON, then the server's own validation) before it is sent.
 )";
 
@@ -626,17 +628,22 @@ int run(const Options& o) {
   if (o.command == "query") {
     const nlohmann::json rows = s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows;
     // A foot_design job's table is its designs, one line per density, a sensitivity job's its
-    // summaries, one line per parameter; --wide shows every point.
-    nlohmann::json designs = nlohmann::json::array(), summaries = nlohmann::json::array();
+    // summaries, one line per parameter, a foot_comparison's its feet, one line per foot; --wide
+    // shows every point.
+    nlohmann::json designs = nlohmann::json::array(), summaries = nlohmann::json::array(),
+                   feet = nlohmann::json::array();
     if (o.what == "solutions" && o.format == cyclopt::client::RowFormat::table)
       for (const nlohmann::json& row : rows) {
         const nlohmann::json values = row.value("values", nlohmann::json());
         if (cyclopt::records::is_designed_foot(values)) designs.push_back(row);
         if (cyclopt::records::is_sensitivity_summary(values)) summaries.push_back(row);
+        if (cyclopt::records::is_compared_foot(values)) feet.push_back(row);
       }
-    for (const auto& [selected, what] : {std::pair{&designs, "densities"}, std::pair{&summaries, "parameters"}})
+    for (const auto& [selected, what] :
+         {std::pair{&designs, "densities"}, std::pair{&summaries, "parameters"}, std::pair{&feet, "feet"}})
       if (!selected->empty()) {
         cyclopt::client::print_rows(std::cout, *selected, o.format);
+        if (const auto headline = cyclopt::client::comparison_envelope_line(*selected)) std::cout << *headline << "\n";
         std::fprintf(stderr, "cyclopt: %zu %s of %zu stored points (--wide: every point)\n", selected->size(), what, rows.size());
         return kOk;
       }

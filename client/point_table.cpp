@@ -1,11 +1,13 @@
 #include "point_table.hpp"
 
+#include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/records/gait_records.hpp"
 #include "cyclopt/records/sensitivity_records.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace cyclopt::client {
 namespace {
@@ -94,6 +96,29 @@ std::optional<nlohmann::ordered_json> sensitivity_summary(const nlohmann::json& 
   return s;
 }
 
+// A foot_comparison's foot (jobs/foot/foot_comparison_kind.cpp, seed 001 section 9.2): mean f_mech
+// (eq. 5.102) over the speeds it shares with the reference, its saving against the reference there,
+// the speeds its sweep reached; the reference's row gives the best-foot envelope's saving instead;
+// with several seeds the rank by saving and whether the order held with every seed.
+std::optional<nlohmann::ordered_json> compared_foot_summary(const nlohmann::json& values) {
+  records::ComparedFootRecord f;
+  try {
+    f = values.get<records::ComparedFootRecord>();
+  } catch (const records::RecordError&) {
+    return std::nullopt;
+  }
+  nlohmann::ordered_json s;
+  s["foot"] = f.reference ? f.foot + " (reference)" : f.foot;
+  s["mean_f_mech"] = number(f.mean_f_mech);
+  s["saving_%"] = f.reference ? nlohmann::ordered_json() : number(100 * f.saving);
+  s["over_speeds"] = f.common_speeds;
+  s["speeds_found"] = std::to_string(f.speeds_found) + "/" + std::to_string(f.speeds);
+  s["rank"] = f.rank ? nlohmann::ordered_json(*f.rank) : nlohmann::ordered_json();
+  s["order_held"] = f.order_held ? nlohmann::ordered_json(*f.order_held ? "yes" : "no") : nlohmann::ordered_json();
+  s["sweep_s"] = number(f.sweep_seconds);
+  return s;
+}
+
 }  // namespace
 
 std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
@@ -101,6 +126,7 @@ std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   if (records::is_foot_fit(values)) return fit_summary(row, values);
   if (records::is_designed_foot(values)) return design_summary(row, values);
   if (records::is_sensitivity_summary(values)) return sensitivity_summary(values);
+  if (records::is_compared_foot(values)) return compared_foot_summary(values);
   const nlohmann::json gait_json = member(values, "gait");
   if (!gait_json.is_object()) return std::nullopt;
   records::GaitRecord gait;
@@ -123,6 +149,25 @@ std::optional<nlohmann::ordered_json> point_summary(const nlohmann::json& row) {
   s["impact_loss_J"] = number(gait.impact_energy_loss);
   s["status"] = member(row, "status");
   return s;
+}
+
+std::optional<std::string> comparison_envelope_line(const nlohmann::json& rows) {
+  for (const nlohmann::json& row : rows) {
+    const nlohmann::json values = member(row, "values");
+    if (!records::is_compared_foot(values)) continue;
+    records::ComparedFootRecord f;
+    try {
+      f = values.get<records::ComparedFootRecord>();
+    } catch (const records::RecordError&) {
+      continue;
+    }
+    if (!f.reference || !f.envelope_saving) continue;
+    char line[200];
+    std::snprintf(line, sizeof line, "the best foot at each speed saves %.1f %% mean f_mech against %s over %d speeds",
+                  100 * *f.envelope_saving, f.foot.c_str(), f.envelope_common_speeds.value_or(0));
+    return std::string(line);
+  }
+  return std::nullopt;
 }
 
 }  // namespace cyclopt::client

@@ -1,10 +1,12 @@
 // `cyclopt query` of a foot_design job (point_table.hpp): a density's row prints as one line with
 // its optima per class, design parameters, m_F, active bounds (10.1), mean f_mech, savings and
 // the speeds its sweep reached, the same for the low-speed design and which is the answer, read
-// through records::DesignedFootRecord.
+// through records::DesignedFootRecord; a foot_comparison's foot is one line with its mean f_mech,
+// saving and speeds, and the job's headline states what the best foot per speed saves.
 #include "point_table.hpp"
 #include "row_table.hpp"
 
+#include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 
 #include <gtest/gtest.h>
@@ -53,6 +55,35 @@ TEST(PointTable, AFootDesignDensityIsOneLine) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2);  // header and the density
   EXPECT_NE(text.find("20.3"), std::string::npos) << text;  // saving vs the start foot, %
   EXPECT_NE(text.find("41.2"), std::string::npos) << text;  // the low-speed design's
+}
+
+TEST(PointTable, AComparedFootIsOneLineAndTheEnvelopesSavingTheHeadline) {
+  records::ComparedFootRecord reference, foot;
+  reference.foot = "point";
+  reference.reference = true;
+  reference.mean_f_mech = 0.045;
+  reference.common_speeds = reference.speeds_found = reference.speeds = 7;
+  reference.envelope_saving = 0.591;
+  reference.envelope_common_speeds = 7;
+  foot.foot = "P2-shoes-left-HMT";
+  foot.mean_f_mech = 0.0184;
+  foot.saving = 0.5911;
+  foot.common_speeds = 7;
+  foot.speeds_found = 6;
+  foot.speeds = 7;
+  const nlohmann::json rows = {{{"curve", 3}, {"point", 0}, {"parameter", 1.0}, {"status", "ok"}, {"values", reference}},
+                               {{"curve", 3}, {"point", 1}, {"parameter", 2.0}, {"status", "ok"}, {"values", foot}}};
+  const auto s = point_summary(rows[1]);
+  ASSERT_TRUE(s);
+  EXPECT_EQ((*s)["foot"], "P2-shoes-left-HMT");
+  EXPECT_DOUBLE_EQ((*s)["saving_%"].get<double>(), 59.11);
+  EXPECT_EQ((*s)["speeds_found"], "6/7");
+  const auto r = point_summary(rows[0]);
+  ASSERT_TRUE(r);
+  EXPECT_EQ((*r)["foot"], "point (reference)");
+  EXPECT_TRUE((*r)["saving_%"].is_null());  // a reference saves nothing against itself
+  EXPECT_EQ(comparison_envelope_line(rows), "the best foot at each speed saves 59.1 % mean f_mech against point over 7 speeds");
+  EXPECT_FALSE(comparison_envelope_line(nlohmann::json::array({rows[1]})));  // only the reference carries it
 }
 
 }  // namespace

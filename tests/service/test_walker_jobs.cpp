@@ -179,6 +179,28 @@ TEST_F(WalkerJobs, FootComparisonStoresEveryFootTheEnvelopeAndTheSavings) {
   EXPECT_NEAR(rolling["saving"].get<double>(), 1.0 - sum[1] / sum[0], 1e-12);
   std::printf("foot_comparison: point %.5f, P1 shoes HM %.5f, saving %.1f %%\n", sum[0] / 2, sum[1] / 2,
               100 * rolling["saving"].get<double>());
+
+  // A compared foot's gait starts a gait job (stored_start.hpp): curve 2 holds the first compared
+  // foot's gaits; started at that optimum, the solve ends at a KKT point with the same f_mech.
+  nlohmann::json again = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "P1-shoes-left-HM-SG"},
+                          {"speed", 1.0}, {"points", 50}, {"start", {{"job", 1}, {"curve", 2}, {"point", 0}}}};
+  const auto gait = run_job("comparison-gait", again, 1);
+  ASSERT_EQ(gait.size(), 1u);
+  EXPECT_EQ(gait[0]["status"], "converged");
+  const double stored = by_curve[2][0]["values"]["f_mech"].get<double>();
+  EXPECT_NEAR(gait[0]["values"]["gait"]["f_mech"].get<double>(), stored, 1e-6 * stored);
+  // The summary curve holds no gaits, and the reference's gaits are point feet's.
+  server::Server srv(config_, kinds_, lcm_);
+  again["start"]["curve"] = 3;
+  const auto summary = client_.submit("comparison-summary", again.dump(), 5.0);
+  ASSERT_TRUE(summary);
+  EXPECT_FALSE(summary->accepted);
+  EXPECT_EQ(summary->field, "start.curve") << summary->problem;
+  again["start"]["curve"] = 1;
+  const auto reference = client_.submit("comparison-reference", again.dump(), 5.0);
+  ASSERT_TRUE(reference);
+  EXPECT_FALSE(reference->accepted);
+  EXPECT_EQ(reference->field, "start.job") << reference->problem;  // point feet, not HM
 }
 
 TEST(WalkerJobSpec, FootComparisonRejectsBadFeetNamingThem) {

@@ -17,6 +17,26 @@ int bezier_degree(const nlohmann::json& spec) {
   return optional_integer(spec, "", "bezier_degree", 3, 10).value_or(walker::WalkingConstants{}.bezier_degree);
 }
 
+// The foot whose gait a point of `job` holds: a gait job's foot; of a foot_comparison, curve 1's
+// the reference, curve 1 + k's its k-th foot and curve 0's the foot the point names (the best foot
+// at its speed), all from the resolved spec, which lists every foot with its parameters. Null
+// for jobs without gaits and for a comparison's summary curve.
+nlohmann::json stored_point_foot(const storage::JobRecord& job, const nlohmann::json& stored_spec, int curve,
+                                 const nlohmann::json& values) {
+  if (job.scene != "walker" || !stored_spec.is_object()) return nullptr;
+  if (stored_spec.contains("foot")) return stored_spec["foot"];
+  if (job.task != "foot_comparison") return nullptr;
+  const nlohmann::json resolved = nlohmann::json::parse(job.resolved_spec_json, nullptr, false);
+  if (!resolved.is_object() || !resolved.contains("reference") || !resolved.contains("feet")) return nullptr;
+  nlohmann::json feet = nlohmann::json::array({resolved["reference"]});
+  for (const nlohmann::json& f : resolved["feet"]) feet.push_back(f);
+  if (curve >= 1 && curve <= static_cast<int>(feet.size())) return feet[curve - 1];
+  if (curve != 0 || !values.contains("foot")) return nullptr;
+  for (const nlohmann::json& f : feet)
+    if (f.value("name", "") == values["foot"]) return f;
+  return nullptr;
+}
+
 }  // namespace
 
 nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& store) {
@@ -27,7 +47,9 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
   const std::optional<storage::JobRecord> stored = store.job(job_id);
   if (!stored) throw SpecError("start.job", "there is no " + job_name + " in this server's database");
   const nlohmann::json stored_spec = nlohmann::json::parse(runnable_spec_text(*stored), nullptr, false);
-  if (stored->scene != "walker" || !stored_spec.is_object() || !stored_spec.contains("foot"))
+  const bool gaits = stored->scene == "walker" && stored_spec.is_object() &&
+                     (stored_spec.contains("foot") || stored->task == "foot_comparison");
+  if (!gaits)
     throw SpecError("start.job", job_name + " is a " + stored->scene + " " + stored->task + " job, not a walker gait job");
   const std::string where = "(curve " + std::to_string(key.curve_index) + ", point " + std::to_string(key.point_index) + ")";
   const std::optional<std::string> values = store.point_values(job_id, key);
@@ -36,9 +58,15 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
                     job_name + " has no stored point " + where + "; it has " +
                         std::to_string(store.stored_points(job_id).size()) + " (cyclopt query " +
                         std::to_string(job_id) + " lists them)");
+  const nlohmann::json point_json = nlohmann::json::parse(*values, nullptr, false);
+  const nlohmann::json point_foot = stored_point_foot(*stored, stored_spec, key.curve_index, point_json);
+  if (point_foot.is_null())
+    throw SpecError(curve_given ? "start.curve" : "start.point",
+                    "point " + where + " of " + job_name + " is no gait of one foot (a foot_comparison's gaits are on " +
+                        "curve 1, the reference, and curves 2, 3, ..., its feet)");
   records::WalkerPointRecord point;
   try {
-    point = nlohmann::json::parse(*values).get<records::WalkerPointRecord>();
+    point = point_json.get<records::WalkerPointRecord>();
   } catch (const std::exception& e) {
     throw SpecError("start.point", "point " + where + " of " + job_name + " is not a walker point: " + e.what());
   }
@@ -47,7 +75,7 @@ nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& stor
                                        (point.gait ? "" : " (no gait was found there)"));
   if (!spec.contains("foot")) return spec;  // the walker fields' own check names "foot"
   const foot::FootSpec foot = io::foot_value(spec["foot"], "foot");
-  const foot::FootSpec stored_foot = io::foot_value(stored_spec["foot"], "foot");
+  const foot::FootSpec stored_foot = io::foot_value(point_foot, "foot");
   if (foot.model != stored_foot.model)
     throw SpecError("start.job", job_name + " is for the foot model " + std::string(foot::to_string(stored_foot.model)) +
                                      ", this job's foot is " + std::string(foot::to_string(foot.model)) +
