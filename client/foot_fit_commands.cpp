@@ -71,7 +71,7 @@ or a long gap cuts is refused with the reason and not fitted.
                        fit_{hm,hmt}_ankle (Fig. 4.3a/4.4a) and fit_{hm,hmt}_outline (Fig. 4.3b/4.4b)
                        as .png and .svg
   --json               print the full report as JSON (the HM and HMT records a foot_fit job stores)
-  --job-spec FILE      write a foot_fit job spec of the server (README, "Fitting a foot") with the
+  --job-spec FILE      write a foot_fit job spec of the server (docs/foot-fitting.md) with the
                        stances' ankle tracks inline instead of fitting: `cyclopt submit --spec FILE`
 Exit codes: 0 fitted and converged, 1 a fit did not converge, 2 bad usage, malformed file or no
 complete stance.

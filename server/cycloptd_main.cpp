@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
                  srv.recovery().cancelled);
     if (!srv.authenticates())
       std::fprintf(stderr, "cycloptd: WARNING: no auth_secret_file in the config: anyone on the LCM network can "
-                           "submit, cancel and read jobs and forge this server's messages (README, Authentication)\n");
+                           "submit, cancel and read jobs and forge this server's messages (docs/service.md, Authentication)\n");
     srv.serve(g_stop);
     const auto& c = srv.counters();
     const long submissions = c.accepted + c.duplicates + c.rejected;

@@ -68,7 +68,7 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
   --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
   --executor E           local (default: the workers compute the jobs) or slurm (each worker
                          dispatches its job to Slurm as a batch job of cyclopt-worker; further
-                         settings in the config file's "slurm" object, see README)
+                         settings in the config file's "slurm" object, see docs/service.md)
   --slurm-spool DIR      directory shared with the cluster nodes (required with slurm)
 Exit codes: 0 clean shutdown, 1 bad usage or config, 2 database or LCM failure.
 )";

@@ -4,7 +4,7 @@
 # creates (unshare -n), whose loopback carries the multicast route: no LCM datagram can reach
 # the host's network. Bounded: the whole run is killed after 170 s.
 #
-# usage: service_integration.sh CYCLOPTD CYCLOPT BAD_SENDER LOG_CHANNELS README.md
+# usage: service_integration.sh CYCLOPTD CYCLOPT BAD_SENDER LOG_CHANNELS docs/results.md
 # exit: 0 pass, 1 fail, 77 skipped (no permission to create a network namespace)
 set -euo pipefail
 
@@ -157,7 +157,7 @@ start_server
   fail "job $TJOB has wrong rows after resume"
 echo "SIGTERM with $CHECKPOINT of 40 points stored: job requeued, resumed and finished with 40/40 rows"
 
-echo "== 5. README's sqlite3 example queries"
+echo "== 5. the sqlite3 example queries of docs/results.md"
 N=0
 while IFS= read -r line; do
   cmd=${line#    }
@@ -165,8 +165,8 @@ while IFS= read -r line; do
   [ -n "$out" ] || fail "query printed nothing: $cmd"
   N=$((N + 1))
 done < <(grep -E '^    sqlite3 .*cyclopt\.db ' "$README")
-[ "$N" -ge 4 ] || fail "found only $N example queries in the README"
-echo "$N README queries answered"
+[ "$N" -ge 4 ] || fail "found only $N example queries in $README"
+echo "$N example queries of $README answered"
 "$CYCLOPT" export "$JOB" --out "$WORK/remote.json" 2>/dev/null || fail "remote export"
 "$CYCLOPT" export "$JOB" --db "$DB" --out "$WORK/local.json" 2>/dev/null || fail "local export"
 cmp -s "$WORK/remote.json" "$WORK/local.json" || fail "remote and local (read-only) exports differ"

@@ -282,7 +282,7 @@ Agreement agreement_on_random_feet(unsigned seed, double k_min, int wanted) {
   return a;
 }
 
-// Acceptance 1 of issue 15 on feet whose transitions the phase grid resolves (k >= 1e-3; the README
+// Acceptance 1 of issue 15 on feet whose transitions the phase grid resolves (k >= 1e-3; docs/walker-jobs.md
 // names k_HM ~ 1e-2 as the limit at P = 200), then the same check down to k = 1e-8, where d/dk of
 // tanh(a/k) cancels terms of size 1/k^2 and both methods lose digits to rounding: reported, with a
 // looser bound. Rounding sets that figure: 5.5e-6 in an SSE2 build, 1.2e-5 with

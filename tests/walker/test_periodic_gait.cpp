@@ -156,7 +156,7 @@ TEST(Quadrature, CorrectedRuleConvergesFasterOnTheGait) {
   const double e_c = std::abs(corrected.floquet - fine.floquet), e_t = std::abs(trapezoid.floquet - fine.floquet);
   std::printf("Lambda error at P = 1600: trapezoid %.2e, corrected %.2e\n", e_t, e_c);
   EXPECT_LT(e_c, 1e-2 * e_t);
-  // f_mech (the positive-part rule) at the sweeps' P = 200: 2.6e-6 against 1.6e-3 relative (README).
+  // f_mech (the positive-part rule) at the sweeps' P = 200: 2.6e-6 against 1.6e-3 relative (docs/walker-jobs.md).
   const GaitEvaluator coarse(testing::reference_model("P2-shoes-left-HMT", 200));
   const double f_t = coarse.evaluate(ref.start.x, opt).f_mech;
   opt.quadrature = Quadrature::corrected_trapezoid;

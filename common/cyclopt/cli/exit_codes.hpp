@@ -1,6 +1,6 @@
 #pragma once
 // The exit codes of every cyclopt program (cyclopt, cyclopt-foot, cyclopt-giant-swing, cycloptd,
-// cyclopt-worker): one table, printed by each program's --help and in the README ("Exit codes").
+// cyclopt-worker): one table, printed by each program's --help and in docs/results.md ("Exit codes").
 
 namespace cyclopt::cli {
 

@@ -59,7 +59,7 @@
 // adds jobs.isa_level and build_flags. Migrating adds the columns an older file lacks and records
 // the current version.
 //
-// Example queries: README.md, section "The service".
+// Example queries: docs/results.md, "The database".
 
 #include <string_view>
 
