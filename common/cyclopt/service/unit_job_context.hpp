@@ -25,7 +25,8 @@ class UnitJobContext final : public JobContext {
 
   std::int64_t job_id() const override { return job_.job_id(); }
   const JobLimits& limits() const override { return job_.limits(); }
-  void report_progress(const ProgressReport& report) override { job_.report_progress(report); }
+  // The report, naming this unit (ProgressReport::unit).
+  void report_progress(const ProgressReport& report) override;
   void count_iterations(int n) override { job_.count_iterations(n); }
   // The job announced the points of all its units: a unit announcing throws std::logic_error.
   void announce(int points_total) override;
@@ -42,6 +43,7 @@ class UnitJobContext final : public JobContext {
 
  private:
   JobContext& job_;
+  std::string unit_id_;
   std::string prefix_;
   const std::atomic<bool>* abandoned_;
 };
