@@ -39,9 +39,10 @@ constexpr int kQpIterations = 20000;
 
 // A coarse solve that ends with at most this constraint violation found a gait on the coarse grid.
 constexpr double kCoarseFeasible = 1e-6;
-// The ETA's guess of a closure pass's solves per grid speed until one was measured: its starts are
-// the neighbours' best points (two) and the points of curves without one there.
-constexpr double kClosureStartsPerSpeed = 2.0;
+// The ETA's guess of a closure pass's solves per grid speed until one was measured: most speeds
+// have no start left to try, the others start next to an optimum (measured on point feet, 21
+// speeds: a pass took 3 s, 0.34 multistart solves' time per speed; bench/results/progress_honesty.txt).
+constexpr double kClosureSolvesPerSpeed = 0.5;
 
 bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
@@ -180,6 +181,7 @@ class Sweep {
   Clock::time_point closure_start_;             // of the closure
   std::size_t closure_visited_ = 0;             // grid speeds the closure's passes went through
   std::size_t closure_next_ = 0;                // the pass's grid speed being solved
+  int closure_solved_ = 0;                      // grid speeds with starts the closure solved
   bool closure_ended_ = false;
 };
 
@@ -209,13 +211,13 @@ double Sweep::eta_seconds() const {
   const double batch_wall = progress_.phase == SweepPhase::multistart ? seconds_since(batch_start_) : 0.0;
   const double solve_rate = computed_solves_ > 0 ? (r_.multistart_seconds + batch_wall) / computed_solves_ : SweepProgress::kNaN;
   const int unreached = progress_.speeds_total - progress_.speeds_reached;
-  // The closure: the grid speeds of the pass left at its measured seconds per speed (before it, a
-  // batch of kClosureStartsPerSpeed solves per speed); one pass - whether another follows cannot
-  // be foreseen.
+  // The closure: the grid speeds of the pass left at its measured seconds per speed (once a speed
+  // with starts was solved; before, kClosureSolvesPerSpeed solves per speed); one pass - whether
+  // another follows cannot be foreseen.
   double closure = 0.0;
   if (o_.closure.enabled && !closure_ended_) {
-    const double per_speed = closure_visited_ > 0 ? seconds_since(closure_start_) / closure_visited_
-                                                  : kClosureStartsPerSpeed * solve_rate;
+    const double per_speed = closure_solved_ > 0 && closure_visited_ > 0 ? seconds_since(closure_start_) / closure_visited_
+                                                                         : kClosureSolvesPerSpeed * solve_rate;
     const std::size_t visited = progress_.phase == SweepPhase::closure ? closure_next_ : 0;
     closure = static_cast<double>(o_.speeds.size() - visited) * per_speed;
   }
@@ -758,6 +760,10 @@ bool Sweep::closure_pass(int pass) {
     std::vector<Eigen::VectorXd> starts;
     for (const CurvePoint* p : from) starts.push_back(p->x);
     const nlp::MultistartResult m = solve_from(v, std::move(starts));
+    {
+      const std::lock_guard lock(progress_mutex_);
+      ++closure_solved_;
+    }
     r_.closure.solves += static_cast<int>(m.runs.size());
     if (m.optima.empty()) continue;
     const double f = m.optima.front().objective;
