@@ -156,13 +156,8 @@ std::vector<std::string> fleet_table(const std::vector<FleetJob>& jobs, FleetVie
 }
 
 std::string local_iso_minutes(double unix_seconds) {
-  if (!std::isfinite(unix_seconds)) return "-";
-  const std::time_t t = static_cast<std::time_t>(unix_seconds);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M", &tm);
-  return buf;
+  const std::string t = local_iso_time(unix_seconds);
+  return t.size() > 16 ? t.substr(0, 16) : t;
 }
 
 std::string local_iso_time(double unix_seconds) {
