@@ -38,6 +38,7 @@ class UnitJobContext final : public JobContext {
   void store_checkpoint(const std::string& key, const std::string& value) override;
   std::map<std::string, std::string> stored_checkpoints() override;  // this unit's, without the prefix
   StopReason stop_reason() override;
+  void unit_ended(const std::string& unit_id) override { job_.unit_ended(unit_id); }
   // Units do not split again: throws std::logic_error.
   void run_units(const std::vector<WorkUnit>& units, const UnitRun& run) override;
 
