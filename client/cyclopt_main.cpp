@@ -26,17 +26,21 @@
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt_channels.hpp"
+#include "fleet_table.hpp"
 #include "point_table.hpp"
 #include "progress_line.hpp"
 #include "row_table.hpp"
 #include "service_client.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -79,8 +83,16 @@ results database file directly (read-only) when given --db FILE.
                      0.5 s until the server answers (same request id, so never queued
                      twice). Prints the job id.
   watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
-  status JOB         one job's state, counts and timings
-  list [--state S]   jobs (S: queued, running, done, failed, cancelled)
+  status JOB         one job's state, counts, timings and last progress (times ISO 8601, local)
+  list [--state S]   jobs, one line each: id, name, kind, foot, state, progress, best
+                     objective, run time, submitted/started/finished (ISO 8601, local); fits
+                     the terminal (default 120 columns); --wide every column (request ids,
+                     raw numbers). S: queued, running, done, incomplete, failed, cancelled
+  top [--state S] [--interval S] [--once]
+                     every job live, one line each, refreshed in place every S s (default 2;
+                     a log gets the table again each time; --once: print once and exit);
+                     fits the terminal (default 80 columns) by dropping columns from the
+                     right, never state, progress or best objective (docs/watching-jobs.md)
   query JOB [--what solutions|events|curves|trajectories] [--wide | --csv | --json]
                      a job's solved points (default): for walker jobs one line per point
                      (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
@@ -113,7 +125,8 @@ results database file directly (read-only) when given --db FILE.
                      foot_design job), all figures
                      (default FILE: jobJOB.html)
 
-Output of status, list, query: aligned table (times in ISO 8601 UTC), or --wide / --csv / --json.
+Output of status, list, query: aligned table (times in ISO 8601: query's UTC, list's and
+status' local), or --wide / --csv / --json (Unix seconds).
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
 --key-file FILE (sign requests and believe only answers signed with this key; default
 $CYCLOPT_KEY_FILE; docs/service.md, Authentication), --version.
@@ -123,7 +136,7 @@ A spec is checked locally (JSON, then the server's own validation) before it is 
 namespace cli = cyclopt::cli;
 constexpr int kOk = cli::kExitOk, kRejected = cli::kExitRejected, kNoAnswer = cli::kExitNoAnswer;
 
-const std::vector<std::string> kCommands = {"submit", "watch", "status", "list", "query", "export", "cancel", "plot", "report"};
+const std::vector<std::string> kCommands = {"submit", "watch", "status", "list", "top", "query", "export", "cancel", "plot", "report"};
 
 struct Options {
   std::string command;
@@ -135,7 +148,8 @@ struct Options {
   double timeout = 10.0, watch_timeout = 3600.0, speed = std::nan(""), design_speed = std::nan(""), foot_scale = std::nan(""),
          relative_range = std::nan("");
   int point_delay_ms = -1, starts = -1, sweep_starts = -1, steps = -1;
-  bool watch = false;
+  double interval = 2.0;  // top's refresh
+  bool watch = false, once = false;
   cyclopt::client::RowFormat format = cyclopt::client::RowFormat::table;
 };
 
@@ -165,7 +179,7 @@ std::int64_t job_id(const std::string& what, const std::string& text) {
 const std::vector<std::string> kOptionNames = {
     "--lcm-url", "--key-file", "--timeout", "--watch-timeout", "--db", "--spec", "--foot", "--sweep",
     "--values", "--speeds", "--task", "--feet", "--reference", "--trials", "--densities", "--design-speed", "--starts", "--sweep-starts", "--foot-scale", "--parameters", "--relative-range", "--steps", "--name", "--point-delay-ms", "--request-id", "--state", "--what",
-    "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--help", "--version"};
+    "--out", "--job", "--from", "--result", "--speed", "--watch", "--json", "--csv", "--wide", "--once", "--interval", "--help", "--version"};
 
 Options parse_args(int argc, char** argv) {
   Options o;
@@ -215,6 +229,8 @@ Options parse_args(int argc, char** argv) {
     else if (a == "--result") o.result = next();
     else if (a == "--speed") o.speed = number(next());
     else if (a == "--watch") o.watch = true;
+    else if (a == "--once") o.once = true;
+    else if (a == "--interval") o.interval = number(next());
     else if (a == "--json") o.format = cyclopt::client::RowFormat::json;
     else if (a == "--csv") o.format = cyclopt::client::RowFormat::csv;
     else if (a == "--wide") o.format = cyclopt::client::RowFormat::wide;
@@ -223,6 +239,7 @@ Options parse_args(int argc, char** argv) {
     else o.positional.push_back(a);
   }
   if (!(o.timeout > 0) || !(o.watch_timeout > 0)) throw UsageError("--timeout and --watch-timeout must be > 0");
+  if (!(o.interval >= 0.2)) throw UsageError("--interval must be >= 0.2 s");
   return o;
 }
 
@@ -425,17 +442,25 @@ int exit_for_state(const std::string& state) {
   return state == "incomplete" ? cyclopt::cli::kExitIncomplete : kRejected;
 }
 
-// Terminal width for the progress line (COLUMNS, else the terminal's, else 100).
-std::size_t terminal_width() {
+// Terminal width (COLUMNS, else the terminal's on `stream`, else `fallback`).
+std::size_t terminal_width(FILE* stream, std::size_t fallback) {
   if (const char* columns = std::getenv("COLUMNS"); columns && std::atoi(columns) > 20) return std::atoi(columns);
   winsize w{};
-  if (ioctl(fileno(stderr), TIOCGWINSZ, &w) == 0 && w.ws_col > 20) return w.ws_col;
-  return 100;
+  if (ioctl(fileno(stream), TIOCGWINSZ, &w) == 0 && w.ws_col > 20) return w.ws_col;
+  return fallback;
+}
+
+// Lines of stdout's terminal (LINES, else the terminal's; 0: not known).
+std::size_t terminal_height() {
+  if (const char* lines = std::getenv("LINES"); lines && std::atoi(lines) > 2) return std::atoi(lines);
+  winsize w{};
+  if (ioctl(fileno(stdout), TIOCGWINSZ, &w) == 0 && w.ws_row > 2) return w.ws_row;
+  return 0;
 }
 
 int watch(Session& s, const Options& o, std::int64_t job_id) {
   const bool tty = isatty(fileno(stderr));
-  const std::size_t width = tty ? terminal_width() - 1 : 400;
+  const std::size_t width = tty ? terminal_width(stderr, 100) - 1 : 400;
   cyclopt::client::LogThrottle log(std::chrono::seconds(5));
   std::size_t shown = 0;  // characters of the line on the terminal
   auto bar = [&](const cyclopt_lcm::job_progress_t& p) {
@@ -524,12 +549,83 @@ int submit(Session& s, const Options& o) {
 int status(Session& s, const Options& o) {
   const auto page = s.fetch(cyclopt::storage::query_for("job", job_argument(o)));
   nlohmann::json job = page.rows.at(0);
-  if (o.format == cyclopt::client::RowFormat::table) {
-    for (const auto& [k, v] : job.items()) std::printf("%-17s %s\n", k.c_str(), v.is_string() ? v.get<std::string>().c_str() : v.dump().c_str());
-  } else {
+  if (o.format != cyclopt::client::RowFormat::table) {
     cyclopt::client::print_rows(std::cout, nlohmann::json::array({job}), o.format);
+    return kOk;
+  }
+  // The job's last recorded progress as one line, times as ISO 8601 (local, with the offset).
+  const cyclopt::client::FleetJob f = cyclopt::client::fleet_job(job);
+  if (f.state != "queued" && std::isfinite(f.percent)) {
+    std::string line = cyclopt::client::percent_text(f.percent, f.percent_lower_bound);
+    if (f.state == "running") line += ", ETA " + cyclopt::client::duration_text(f.eta_seconds);
+    if (!f.phase.empty()) line += ", " + f.phase;
+    if (std::isfinite(f.best_objective)) line += ", best " + std::to_string(f.best_objective);
+    if (job["progress_at"].is_number()) line += " (at " + cyclopt::client::local_iso_time(job["progress_at"].get<double>()) + ")";
+    job["progress"] = line;
+  }
+  for (const char* raw : {"progress_percent", "phase", "eta_seconds", "best_objective", "progress_at"}) job.erase(raw);
+  for (const auto& [k, v] : job.items()) {
+    std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+    if (k.size() > 3 && k.compare(k.size() - 3, 3, "_at") == 0) text = v.is_number() ? cyclopt::client::local_iso_time(v.get<double>()) : "-";
+    std::printf("%-17s %s\n", k.c_str(), text.c_str());
   }
   return kOk;
+}
+
+// The jobs as a table fitting the terminal (120 columns when not a terminal); --wide / --csv /
+// --json every column.
+int list(Session& s, const Options& o) {
+  const nlohmann::json rows = s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows;
+  if (o.format != cyclopt::client::RowFormat::table) {
+    cyclopt::client::print_rows(std::cout, rows, o.format);
+    return kOk;
+  }
+  std::vector<cyclopt::client::FleetJob> jobs;
+  for (const nlohmann::json& row : rows) jobs.push_back(cyclopt::client::fleet_job(row));
+  for (const std::string& line : cyclopt::client::fleet_table(jobs, cyclopt::client::FleetView::list, terminal_width(stdout, 120)))
+    std::printf("%s\n", line.c_str());
+  return kOk;
+}
+
+// The fleet live (docs/watching-jobs.md): the job list from the server every --interval, the
+// progress messages of every job in between. Running and queued jobs first, then the others,
+// newest first; on a terminal as many as fit its height, redrawn in place.
+int top(Session& s, const Options& o) {
+  const bool tty = isatty(fileno(stdout));
+  std::map<std::int64_t, cyclopt_lcm::job_progress_t> live;  // the last message of each job
+  const auto on_progress = [&](const cyclopt_lcm::job_progress_t& p) { live[p.job_id] = p; };
+  while (true) {
+    std::vector<cyclopt::client::FleetJob> jobs;
+    for (const nlohmann::json& row : s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows) {
+      jobs.push_back(cyclopt::client::fleet_job(row));
+      cyclopt::client::FleetJob& j = jobs.back();
+      if (const auto it = live.find(j.id); it != live.end() && j.state == "running") apply_progress(j, it->second);
+    }
+    // A moment of live messages before the first frame, the interval between frames.
+    s.remote().listen([&](const cyclopt_lcm::job_progress_t& p) {
+      on_progress(p);
+      for (cyclopt::client::FleetJob& j : jobs)
+        if (j.id == p.job_id && j.state == "running") apply_progress(j, p);
+    }, o.once ? std::min(o.interval, 1.0) : 0.0);
+    const auto active = [](const cyclopt::client::FleetJob& j) { return j.state == "running" || j.state == "queued"; };
+    std::stable_sort(jobs.begin(), jobs.end(), [&](const auto& a, const auto& b) {
+      return active(a) != active(b) ? active(a) : active(a) ? a.id < b.id : a.id > b.id;
+    });
+    const std::size_t width = terminal_width(stdout, 80), height = tty ? terminal_height() : 0;
+    if (height > 0 && jobs.size() + 3 > height) jobs.resize(height - 3);
+    std::string frame = tty ? "\x1b[H\x1b[2J" : "";
+    char head[96];
+    const std::time_t now = std::time(nullptr);
+    std::snprintf(head, sizeof head, "cyclopt top  %s  %zu jobs\n", cyclopt::client::local_iso_time(static_cast<double>(now)).c_str(),
+                  jobs.size());
+    frame += std::string(head).substr(0, width) + (std::string(head).size() > width ? "\n" : "");
+    for (const std::string& line : cyclopt::client::fleet_table(jobs, cyclopt::client::FleetView::top, width)) frame += line + "\n";
+    std::fputs(frame.c_str(), stdout);
+    if (!tty) std::fputc('\n', stdout);
+    std::fflush(stdout);
+    if (o.once) return kOk;
+    s.remote().listen(on_progress, o.interval);
+  }
 }
 
 int cancel(Session& s, const Options& o) {
@@ -621,10 +717,8 @@ int run(const Options& o) {
   if (o.command == "export") return export_job(s, o);
   if (o.command == "plot") return plot(s, o);
   if (o.command == "report") return report(s, o);
-  if (o.command == "list") {
-    cyclopt::client::print_rows(std::cout, s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows, o.format);
-    return kOk;
-  }
+  if (o.command == "list") return list(s, o);
+  if (o.command == "top") return top(s, o);
   if (o.command == "query") {
     const nlohmann::json rows = s.fetch(cyclopt::storage::query_for(o.what, job_argument(o))).rows;
     // A foot_design job's table is its designs, one line per density, a sensitivity job's its

@@ -59,7 +59,7 @@ void ServiceClient::on_ack(std::span<const std::uint8_t> payload) {
 }
 void ServiceClient::on_progress(std::span<const std::uint8_t> payload) {
   const auto m = checked<cyclopt_lcm::job_progress_t>(channels::kProgress, payload);
-  if (m && progress_callback_ && m->job_id == watched_job_) (*progress_callback_)(*m);
+  if (m && progress_callback_ && (m->job_id == watched_job_ || watched_job_ == kEveryJob)) (*progress_callback_)(*m);
 }
 void ServiceClient::on_done(std::span<const std::uint8_t> payload) {
   const auto m = checked<cyclopt_lcm::job_done_t>(channels::kDone, payload);
@@ -194,6 +194,14 @@ std::optional<cyclopt_lcm::job_done_t> ServiceClient::watch(
   progress_callback_ = nullptr;
   watched_job_ = -1;
   return result;
+}
+
+void ServiceClient::listen(const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress, double seconds) {
+  watched_job_ = kEveryJob;
+  progress_callback_ = &on_progress;
+  pump_until([] { return false; }, seconds);
+  progress_callback_ = nullptr;
+  watched_job_ = -1;
 }
 
 std::optional<cyclopt_lcm::job_ack_t> ServiceClient::send_raw(const std::string& channel, const std::string& bytes,

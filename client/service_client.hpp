@@ -56,6 +56,9 @@ class ServiceClient {
                                                const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress,
                                                double timeout_seconds, double poll_seconds = 1.0);
 
+  // Calls on_progress for every progress message of any job for `seconds` (cyclopt top).
+  void listen(const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress, double seconds);
+
   // For tests: publishes arbitrary bytes and waits for the ack with request id `reply_id`.
   std::optional<cyclopt_lcm::job_ack_t> send_raw(const std::string& channel, const std::string& bytes,
                                                  const std::string& reply_id, double timeout_seconds);
@@ -88,6 +91,7 @@ class ServiceClient {
   std::map<std::string, cyclopt_lcm::job_ack_t> acks_;
   std::map<std::int64_t, cyclopt_lcm::job_done_t> done_;
   std::map<std::string, cyclopt_lcm::query_reply_t> replies_;
+  static constexpr std::int64_t kEveryJob = -2;  // watched_job_ while listening
   std::int64_t watched_job_ = -1;
   const std::function<void(const cyclopt_lcm::job_progress_t&)>* progress_callback_ = nullptr;
 };

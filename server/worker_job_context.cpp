@@ -1,10 +1,9 @@
 #include "worker_job_context.hpp"
 
-#include <cyclopt_lcm/job_progress_t.hpp>
-
 #include "cyclopt_channels.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace cyclopt::server {
@@ -22,6 +21,7 @@ WorkerJobContext::WorkerJobContext(const storage::JobRecord& job, const service:
       cancel_(cancel),
       shutdown_(shutdown),
       executor_(executor),
+      meter_(job.points_stored),
       points_stored_(job.points_stored),
       points_at_start_(job.points_stored) {}
 
@@ -81,6 +81,7 @@ void WorkerJobContext::store_checkpoint(const std::string& key, const std::strin
 }
 
 service::StopReason WorkerJobContext::stop_reason() {
+  republish_if_quiet();
   if (std::chrono::steady_clock::now() - last_checkpoint() > kCheckpointInterval) try {
       checkpoint_time();
     } catch (const storage::StorageError&) {  // a full disk: the time is recorded when the attempt ends
@@ -94,12 +95,40 @@ service::StopReason WorkerJobContext::stop_reason() {
 
 void WorkerJobContext::report_progress(const service::ProgressReport& report) {
   std::lock_guard lock(progress_mutex_);
+  last_report_ = report;
+  std::string& phase = phases_[report.unit];
+  const bool phase_change = !report.phase.empty() && report.phase != phase;
+  if (phase_change) phase = report.phase;
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_publish_ < min_interval_) {
+  if (!phase_change && now - last_publish_ < min_interval_) {
     pending_ = report;
     return;
   }
-  publish(report);
+  const cyclopt_lcm::job_progress_t m = publish(report);
+  if (phase_change || now - last_record_ > kCheckpointInterval) record_progress(m, phase_change);
+}
+
+void WorkerJobContext::run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) {
+  {
+    std::lock_guard lock(progress_mutex_);
+    meter_.units(static_cast<int>(units.size()));
+  }
+  executor_.run_units(job_, units, run, *this);
+}
+
+void WorkerJobContext::unit_ended(const std::string& unit_id) {
+  std::lock_guard lock(progress_mutex_);
+  meter_.unit_ended(unit_id, job_.run_seconds + elapsed_seconds());
+  phases_.erase(unit_id);
+}
+
+void WorkerJobContext::republish_if_quiet() {
+  std::unique_lock lock(progress_mutex_, std::try_to_lock);
+  if (!lock || last_publish_ == std::chrono::steady_clock::time_point{}) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_publish_ < kQuietRepublish) return;
+  const cyclopt_lcm::job_progress_t m = publish(pending_ ? *pending_ : last_report_);
+  if (now - last_record_ > kCheckpointInterval) record_progress(m, false);
 }
 
 void WorkerJobContext::flush_progress() {
@@ -109,10 +138,42 @@ void WorkerJobContext::flush_progress() {
   publish(last);
 }
 
-void WorkerJobContext::publish(const service::ProgressReport& r) {
-  const auto now = std::chrono::steady_clock::now();
-  pending_.reset();
-  last_publish_ = now;
+void WorkerJobContext::finish_progress(storage::JobState state) {
+  std::lock_guard lock(progress_mutex_);
+  service::ProgressReport r = last_report_;
+  r.phase = storage::to_string(state);
+  r.iteration = -1;
+  cyclopt_lcm::job_progress_t m = message(r);
+  const service::ProgressReading end = meter_.finish(state == storage::JobState::done || state == storage::JobState::incomplete);
+  m.percent = end.percent;
+  m.percent_is_lower_bound = end.lower_bound;
+  m.eta_seconds = end.eta_seconds;
+  publish_seconds_ += publisher_.publish(channels::kProgress, m);
+  record_progress(m, false);
+}
+
+void WorkerJobContext::record_progress(const cyclopt_lcm::job_progress_t& m, bool phase_event) {
+  last_record_ = std::chrono::steady_clock::now();
+  const auto known = [](double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; };
+  const storage::JobProgressRecord p{m.percent, m.phase, known(m.eta_seconds), known(m.best_objective),
+                                     m.timestamp_us * 1e-6};
+  char text[64];
+  std::snprintf(text, sizeof text, " | %s%.0f%% | ETA %s", m.percent_is_lower_bound ? ">=" : "", m.percent,
+                service::clock_text(m.eta_seconds).c_str());
+  std::string line = m.phase + text;
+  if (std::isfinite(m.best_objective)) {
+    std::snprintf(text, sizeof text, " | best %.6g", m.best_objective);
+    line += text;
+  }
+  if (phase_event) std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job_.id), line.c_str());
+  try {
+    store_.set_progress(job_.id, p);
+    if (phase_event) store_.add_event(job_.id, "phase", line);
+  } catch (const storage::StorageError&) {  // progress is not a result: a full disk loses only this record
+  }
+}
+
+cyclopt_lcm::job_progress_t WorkerJobContext::message(const service::ProgressReport& r) const {
   cyclopt_lcm::job_progress_t m;
   m.job_id = job_.id;
   m.request_id = job_.request_id;
@@ -126,19 +187,27 @@ void WorkerJobContext::publish(const service::ProgressReport& r) {
   m.curve_id = r.curve_id;
   m.points_done = r.points_done;
   m.points_total = r.points_total >= 0 ? r.points_total : points_total_;
-  m.percent = m.points_total > 0 ? 100.0 * m.points_done / m.points_total : std::numeric_limits<double>::quiet_NaN();
-  const int solved_now = m.points_done - points_at_start_;
-  m.eta_seconds = std::isfinite(r.eta_seconds) ? r.eta_seconds
-                 : solved_now > 0 && m.points_total > 0
-                      ? elapsed_seconds() / solved_now * (m.points_total - m.points_done)
-                      : std::numeric_limits<double>::quiet_NaN();
   m.message = r.message;
   m.phase = r.phase;
   m.phase_done = r.phase_done;
   m.phase_total = r.phase_total;
   m.best_objective = r.best_objective;
   m.elapsed_seconds = job_.run_seconds + elapsed_seconds();
+  return m;
+}
+
+cyclopt_lcm::job_progress_t WorkerJobContext::publish(const service::ProgressReport& r) {
+  pending_.reset();
+  last_publish_ = std::chrono::steady_clock::now();
+  cyclopt_lcm::job_progress_t m = message(r);
+  service::ProgressReport resolved = r;
+  resolved.points_total = m.points_total;
+  const service::ProgressReading reading = meter_.read(resolved, m.elapsed_seconds, elapsed_seconds());
+  m.percent = reading.percent;
+  m.percent_is_lower_bound = reading.lower_bound;
+  m.eta_seconds = reading.eta_seconds;
   publish_seconds_ += publisher_.publish(channels::kProgress, m);
+  return m;
 }
 
 }  // namespace cyclopt::server

@@ -1,6 +1,7 @@
 #pragma once
 // The JobContext a worker hands to a job kind: commits points to the store, publishes progress
-// at most progress_hz times per second, and answers stop_reason() from the cancel flag, the
+// at most progress_hz times per second (a phase change at once: it is also stored as an event,
+// logged, and the job's progress recorded in the store, as every few seconds), and answers stop_reason() from the cancel flag, the
 // server's shutdown flag and the job's time and iteration limits (time summed over attempts and
 // checkpointed to the store every few seconds, so a kill -9 loses at most that much).
 // report_progress, count_iterations and stop_reason may be called from several threads at once
@@ -9,13 +10,17 @@
 // from the job's worker thread.
 
 #include "cyclopt/service/job_context.hpp"
+#include "cyclopt/service/progress_meter.hpp"
 #include "cyclopt/storage/job_record.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "job_executor.hpp"
 #include "lcm_publisher.hpp"
 
+#include <cyclopt_lcm/job_progress_t.hpp>
+
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -40,12 +45,14 @@ class WorkerJobContext final : public service::JobContext {
   std::map<std::string, std::string> stored_checkpoints() override { return store_.checkpoints(job_.id); }
   service::StopReason stop_reason() override;
   // The executor's (job_executor.hpp): here, or on Slurm.
-  void run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) override {
-    executor_.run_units(job_, units, run, *this);
-  }
+  void run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) override;
+  void unit_ended(const std::string& unit_id) override;
 
   // Publishes the last report if rate limiting held it back.
   void flush_progress();
+  // The job ended in `state`: publishes and stores its last progress (100 % if it ran to its
+  // end) with the state as phase.
+  void finish_progress(storage::JobState state);
   double elapsed_seconds() const;
   // This attempt's seconds not yet added to the store's run_seconds.
   double unrecorded_seconds() {
@@ -62,11 +69,20 @@ class WorkerJobContext final : public service::JobContext {
   bool complete() const { return points_total_ >= 0 && points_stored_ >= points_total_; }
 
  private:
-  void publish(const service::ProgressReport& report);
+  // The message of a report, without percentage and ETA (the meter's).
+  cyclopt_lcm::job_progress_t message(const service::ProgressReport& report) const;
+  // Publishes the report (callers hold progress_mutex_) and returns the message sent.
+  cyclopt_lcm::job_progress_t publish(const service::ProgressReport& report);
+  // The message's progress into the jobs table; `phase_event`: also an event and a log line.
+  void record_progress(const cyclopt_lcm::job_progress_t& m, bool phase_event);
   void record_store_error(const storage::StorageError& e);
   void checkpoint_time();
   std::chrono::steady_clock::time_point last_checkpoint();
   static constexpr std::chrono::seconds kCheckpointInterval{5};
+  // A long solve reports nothing for a while: stop_reason(), which solvers poll, publishes the last
+  // report again after this long, so the run time and ETA move (try-lock: never waits for it).
+  void republish_if_quiet();
+  static constexpr std::chrono::seconds kQuietRepublish{1};
 
   const storage::JobRecord& job_;
   service::JobLimits limits_;
@@ -80,6 +96,10 @@ class WorkerJobContext final : public service::JobContext {
   std::chrono::steady_clock::time_point last_publish_{};
   std::mutex progress_mutex_;  // last_publish_, pending_
   std::optional<service::ProgressReport> pending_;
+  service::ProgressReport last_report_;  // the last one published or pending
+  service::ProgressMeter meter_;
+  std::map<std::string, std::string> phases_;  // per unit ("": the job), of its last report: a different one is a phase change
+  std::chrono::steady_clock::time_point last_record_{};  // progress into the store
   std::atomic<long long> iterations_{0};
   std::mutex checkpoint_mutex_;  // last_checkpoint_, recorded_seconds_
   std::chrono::steady_clock::time_point last_checkpoint_ = start_;

@@ -190,6 +190,7 @@ void WorkerPool::pause_claims() {
 
 void WorkerPool::publish_done(const storage::JobRecord& job, WorkerJobContext& ctx, storage::JobState state,
                               const std::string& error, const std::optional<storage::JobOutcome>& outcome) {
+  ctx.finish_progress(state);
   cyclopt_lcm::job_done_t done;
   done.job_id = job.id;
   done.request_id = job.request_id;

@@ -148,6 +148,11 @@ class Unit {
     return false;
   }
 
+  // The unit's progress no longer counts (JobContext::unit_ended); nothing for a whole job.
+  void ended() {
+    if (unit_) ctx_.unit_ended(unit_->id);
+  }
+
   // One look at the unit, whose Slurm job was in `state` ("" if the controller no longer knows
   // it, nullopt if squeue could not say): ingests what it wrote, forwards its progress, stops it
   // when the job stops, resubmits it when it left the queue without a result. True: the unit has
@@ -259,7 +264,8 @@ void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64
   bool controller_lost = false;
   std::size_t at = 0;  // the unit being started or polled
   try {
-    for (at = 0; at < units.size(); ++at) ended[at] = units[at]->start();
+    for (at = 0; at < units.size(); ++at)
+      if ((ended[at] = units[at]->start())) units[at]->ended();
     while (std::find(ended.begin(), ended.end(), false) != ended.end()) {
       std::this_thread::sleep_for(std::chrono::duration<double>(poll_seconds));
       std::vector<std::string> ids;
@@ -273,7 +279,7 @@ void run_to_end(const std::vector<Unit*>& units, double poll_seconds, std::int64
                                      : "squeue answers again");
       }
       for (at = 0; at < units.size(); ++at)
-        if (!ended[at]) ended[at] = units[at]->poll(slurm_state(states, units[at]->slurm_id()));
+        if (!ended[at] && (ended[at] = units[at]->poll(slurm_state(states, units[at]->slurm_id())))) units[at]->ended();
     }
   } catch (...) {
     if (at < units.size()) ended[at] = true;  // the unit that threw has ended

@@ -27,7 +27,7 @@ cyclopt_lcm::job_progress_t sweep_report() {
   p.percent = 100.0 * 6 / 21;
   p.eta_seconds = 150.0;
   p.message = "speed sweep";
-  p.phase = "continuation run 2 from 1.3 m/s upwards, curve 0";
+  p.phase = "continuation run 2 from 1.3 m/s upwards, curve 1";
   p.phase_done = 5;
   p.phase_total = 10;
   p.best_objective = 0.02263;
@@ -39,7 +39,29 @@ cyclopt_lcm::job_progress_t sweep_report() {
 
 TEST(ProgressLine, NamesPhasePointsBestObjectiveAndEta) {
   EXPECT_EQ(progress_line(sweep_report(), 200),
-            "job 3  29% 6/21 | 1:12, ETA 2:30 | continuation run 2 from 1.3 m/s upwards, curve 0 5/10 | best 0.02263");
+            "job 3  28% 6/21 | 1:12, ETA 2:30 | continuation run 2 from 1.3 m/s upwards, curve 1 5/10 | best 0.02263");
+}
+
+// The percentage is the server's (not points done / total), rounded down so a running job never
+// reads 100 %, and marked as a lower bound when the server says so.
+TEST(ProgressLine, PercentIsTheServersRoundedDownAndMayBeALowerBound) {
+  cyclopt_lcm::job_progress_t p = sweep_report();
+  p.points_done = 21;
+  p.percent = 99.7;
+  EXPECT_EQ(progress_line(p, 200).substr(0, 15), "job 3  99% 21/2");
+  p.percent_is_lower_bound = true;
+  p.eta_seconds = nan;
+  EXPECT_EQ(progress_line(p, 200).substr(0, 17), "job 3 >=99% 21/21");
+  EXPECT_EQ(percent_text(100.0, false), "100%");
+  EXPECT_EQ(percent_text(nan, false), "?");
+}
+
+// At 80 columns a long phase is cut, not the best objective (issue 53).
+TEST(ProgressLine, EightyColumnsKeepTheBestValue) {
+  const std::string line = progress_line(sweep_report(), 80);
+  EXPECT_EQ(line.size(), 80u);
+  EXPECT_EQ(line.substr(line.size() - 15), " | best 0.02263") << line;
+  EXPECT_NE(line.find("..."), std::string::npos) << line;
 }
 
 TEST(ProgressLine, UnknownsAreSaidAsSuch) {
@@ -49,7 +71,8 @@ TEST(ProgressLine, UnknownsAreSaidAsSuch) {
   p.phase_total = -1;
   p.best_objective = nan;
   p.eta_seconds = nan;
-  EXPECT_EQ(progress_line(p, 200), "job 3 | 1:12, ETA ? | speed sweep | objective 0.031");
+  p.percent = nan;
+  EXPECT_EQ(progress_line(p, 200), "job 3    ? | 1:12, ETA ? | speed sweep | objective 0.031");
 }
 
 TEST(ProgressLine, FitsTheTerminal) {

@@ -127,7 +127,7 @@ TEST_F(ServerAuth, ClientsBelieveOnlyMessagesSignedWithTheirKey) {
   cyclopt_lcm::job_done_t fake_done{ack->job_id, "alice-w", "failed", 0, 0.0, 0.0, "forged", -1, -1};
   rogue.publish(channels::kDone, fake_done);
   rogue.publish(channels::kDone, fake_done, &key("bob"));
-  cyclopt_lcm::job_progress_t fake_progress{ack->job_id, "alice-w", "foot_sweep", 0, 0, 0, 0, 0, 0, 99, 100, 99.0, 0,
+  cyclopt_lcm::job_progress_t fake_progress{ack->job_id, "alice-w", "foot_sweep", 0, 0, 0, 0, 0, 0, 99, 100, 99.0, false, 0,
                                             "forged", "", -1, -1, 0, 0};
   rogue.publish(channels::kProgress, fake_progress);
   int forged_progress = 0, real_progress = 0;

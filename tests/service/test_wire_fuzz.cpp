@@ -57,7 +57,7 @@ std::vector<Sample> samples(std::mt19937_64& rng) {
   query.part_offset = 0;
   cyclopt_lcm::job_ack_t ack{random_text(rng, 40), true, 7, false, "queued", "", random_text(rng, 60)};
   cyclopt_lcm::job_progress_t progress{7,   random_text(rng, 32), "foot_sweep", 123456, 3, 0.5, nan, 1.0, 0, 1, 2, 50.0,
-                                       nan, random_text(rng, 80), random_text(rng, 40), 2, 20, 0.25, 12.5};
+                                       rng() % 2 == 0, nan, random_text(rng, 80), random_text(rng, 40), 2, 20, 0.25, 12.5};
   cyclopt_lcm::job_done_t done{7, random_text(rng, 32), "done", 2, 1.5, 0.001, "", 2, 2};
   cyclopt_lcm::query_reply_t reply{random_text(rng, 40), 0, 1, 1, -1, R"([{"id": 7, "state": "done"}])", "", 0, 0};
   return {{channels::kSubmit, wire::encode(submit), wire::LcmLayout<cyclopt_lcm::job_submit_t>::fields},

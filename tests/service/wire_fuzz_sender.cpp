@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
       sample(cyclopt::channels::kQuery, cyclopt_lcm::query_request_t{"netns-fuzz-query", "jobs", 0, "", 0, 5, 0}),
       sample(cyclopt::channels::kAck, cyclopt_lcm::job_ack_t{"netns-fuzz-ack", true, kForeignJob, false, "queued", "", ""}),
       sample(cyclopt::channels::kProgress,
-             cyclopt_lcm::job_progress_t{kForeignJob, "x", "foot_sweep", 1, 2, 0.5, nan, 1.0, 0, 1, 2, 50.0, nan, "m", "p", 1, 2, nan, 1.0}),
+             cyclopt_lcm::job_progress_t{kForeignJob, "x", "foot_sweep", 1, 2, 0.5, nan, 1.0, 0, 1, 2, 50.0, false, nan, "m", "p", 1, 2, nan, 1.0}),
       sample(cyclopt::channels::kDone, cyclopt_lcm::job_done_t{kForeignJob, "x", "done", 2, 1.5, 0.001, "", 2, 2}),
       sample(cyclopt::channels::kQueryReply,
              cyclopt_lcm::query_reply_t{"netns-fuzz-reply", 0, 1, 1, -1, R"([{"id": 1}])", "", 0, 0})};

@@ -56,6 +56,11 @@ ProgressReport sweep_progress_report(const studies::SweepProgress& p, std::strin
   return r;
 }
 
+std::string without_curve_number(std::string phase) {
+  if (const std::size_t c = phase.rfind(", curve "); c != std::string::npos) phase.erase(c);
+  return phase;
+}
+
 IterationCallback stop_requests(JobContext& ctx) {
   return [&ctx](const nlp::IterationReport&) { return ctx.stop_reason() == StopReason::none; };
 }

@@ -40,6 +40,10 @@ class PhaseProgress {
 // A speed sweep's progress (studies/sweep_progress.hpp) as the job's: points are the grid speeds
 // reached, the phase and its ETA as the sweep measured them.
 service::ProgressReport sweep_progress_report(const studies::SweepProgress& progress, std::string message);
+// The phase without its ", curve c": for sweeps whose curves are not stored under the sweep's
+// numbers (a foot comparison's feet, a foot design's sweeps), so progress names no curve that
+// query and plots number otherwise.
+std::string without_curve_number(std::string phase);
 
 // For solves on other threads (nlp::multistart's workers), where JobContext's counting and
 // reporting may not be called: only honours stop requests.

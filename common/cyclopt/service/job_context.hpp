@@ -73,6 +73,9 @@ class JobContext {
   // checkpoints. Default: here, one after another (run_units_here); the server's context asks its
   // executor. `run` must compute what JobKind::run_unit computes: a remote worker calls that.
   virtual void run_units(const std::vector<WorkUnit>& units, const UnitRun& run);
+  // The unit returned (done, stopped or failed): its progress no longer counts (run_units_here and
+  // run_units_in_parallel call it; the server's context forgets the unit's ETA).
+  virtual void unit_ended(const std::string& unit_id) { (void)unit_id; }
 };
 
 }  // namespace cyclopt::service

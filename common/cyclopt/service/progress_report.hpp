@@ -25,6 +25,7 @@ struct ProgressReport {
   int phase_total = -1;
   double best_objective = kNaN;
   double eta_seconds = kNaN;
+  std::string unit{};  // the work unit reporting (set by UnitJobContext); "": the job itself
 };
 
 }  // namespace cyclopt::service

@@ -11,7 +11,14 @@ namespace cyclopt::service {
 std::string unit_checkpoint_prefix(const std::string& unit_id) { return "unit/" + unit_id + "/"; }
 
 UnitJobContext::UnitJobContext(JobContext& job, const WorkUnit& unit, const std::atomic<bool>* abandoned)
-    : job_(job), prefix_(unit_checkpoint_prefix(unit.id)), abandoned_(abandoned) {}
+    : job_(job), unit_id_(unit.id), prefix_(unit_checkpoint_prefix(unit.id)), abandoned_(abandoned) {}
+
+void UnitJobContext::report_progress(const ProgressReport& report) {
+  if (!report.unit.empty()) return job_.report_progress(report);
+  ProgressReport named = report;
+  named.unit = unit_id_;
+  job_.report_progress(named);
+}
 
 StopReason UnitJobContext::stop_reason() {
   if (abandoned_ && abandoned_->load()) return StopReason::cancelled;
@@ -52,12 +59,14 @@ void run_units_on(const std::vector<WorkUnit>& units, const UnitRun& run, JobCon
       std::string what;
       try {
         run(units[i], ctx);
+        job.unit_ended(units[i].id);
         continue;
       } catch (const std::exception& e) {
         what = e.what();
       } catch (...) {
         what = "unknown exception";
       }
+      job.unit_ended(units[i].id);
       const std::lock_guard<std::mutex> lock(error_mutex);
       if (!failed.exchange(true)) error = "work unit " + units[i].id + ": " + what;
     }

@@ -25,7 +25,8 @@ class UnitJobContext final : public JobContext {
 
   std::int64_t job_id() const override { return job_.job_id(); }
   const JobLimits& limits() const override { return job_.limits(); }
-  void report_progress(const ProgressReport& report) override { job_.report_progress(report); }
+  // The report, naming this unit (ProgressReport::unit).
+  void report_progress(const ProgressReport& report) override;
   void count_iterations(int n) override { job_.count_iterations(n); }
   // The job announced the points of all its units: a unit announcing throws std::logic_error.
   void announce(int points_total) override;
@@ -37,11 +38,13 @@ class UnitJobContext final : public JobContext {
   void store_checkpoint(const std::string& key, const std::string& value) override;
   std::map<std::string, std::string> stored_checkpoints() override;  // this unit's, without the prefix
   StopReason stop_reason() override;
+  void unit_ended(const std::string& unit_id) override { job_.unit_ended(unit_id); }
   // Units do not split again: throws std::logic_error.
   void run_units(const std::vector<WorkUnit>& units, const UnitRun& run) override;
 
  private:
   JobContext& job_;
+  std::string unit_id_;
   std::string prefix_;
   const std::atomic<bool>* abandoned_;
 };

@@ -9,6 +9,15 @@
 
 namespace cyclopt::storage {
 
+// A job's last recorded progress (results_schema.hpp): what a fleet view shows without LCM.
+struct JobProgressRecord {
+  std::optional<double> percent;  // 0..100, 100 only once the job ended done
+  std::string phase;
+  std::optional<double> eta_seconds;
+  std::optional<double> best_objective;
+  std::optional<double> at;       // Unix seconds
+};
+
 struct JobRecord {
   std::int64_t id = 0;
   std::string request_id;
@@ -32,6 +41,7 @@ struct JobRecord {
   std::string resolved_spec_json;  // the spec with defaults filled in ("" before schema 3)
   std::string isa_level;           // instruction-set level of the accepting build ("" before schema 4)
   std::string build_flags;         // its compiler and code-generation flags ("" before schema 4)
+  JobProgressRecord progress;      // the last recorded progress (schema 5)
 };
 
 }  // namespace cyclopt::storage

@@ -124,6 +124,30 @@ nlohmann::json curve_rows(ResultStore& store, std::int64_t job_id, int offset, i
                     });
 }
 
+// What a fleet view names a job by: the spec's "name", and its feet ("foot", "feet", "start_foot":
+// a preset's name, a foot spec's "name", else "custom"), comma-separated.
+std::string foot_label(const nlohmann::json& foot) {
+  if (foot.is_string()) return foot.get<std::string>();
+  if (foot.is_object() && foot.contains("name") && foot["name"].is_string()) return foot["name"].get<std::string>();
+  return "custom";
+}
+
+std::pair<std::string, std::string> job_labels(const std::string& spec_json) {
+  const nlohmann::json spec = nlohmann::json::parse(spec_json, nullptr, false);
+  if (!spec.is_object()) return {};
+  std::string name = spec.contains("name") && spec["name"].is_string() ? spec["name"].get<std::string>() : "";
+  std::string feet;
+  for (const char* key : {"foot", "start_foot", "feet"}) {
+    if (!spec.contains(key)) continue;
+    const nlohmann::json& f = spec[key];
+    for (const nlohmann::json& one : f.is_array() ? f : nlohmann::json::array({f})) {
+      if (!feet.empty()) feet += ',';
+      feet += foot_label(one);
+    }
+  }
+  return {utf8(name), utf8(feet)};
+}
+
 JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
   std::optional<JobRecord> j = store.job(job_id);
   if (!j) throw std::invalid_argument("job_id: no job " + std::to_string(job_id));
@@ -134,7 +158,10 @@ JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
 
 nlohmann::json to_json(const JobRecord& job, bool with_spec) {
   auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  const auto [name, feet] = job_labels(job.spec_json);
   nlohmann::json j = {{"id", job.id},
+                      {"name", name},
+                      {"foot", feet},
                       {"request_id", utf8(job.request_id)},
                       {"scene", utf8(job.scene)},
                       {"task", utf8(job.task)},
@@ -153,7 +180,12 @@ nlohmann::json to_json(const JobRecord& job, bool with_spec) {
                       {"program_version", utf8(job.program_version)},
                       {"isa_level", utf8(job.isa_level)},
                       {"build_flags", utf8(job.build_flags)},
-                      {"seeds", json_cell(job.seeds_json, "seeds_json")}};
+                      {"seeds", json_cell(job.seeds_json, "seeds_json")},
+                      {"progress_percent", opt(job.progress.percent)},
+                      {"phase", utf8(job.progress.phase)},
+                      {"eta_seconds", opt(job.progress.eta_seconds)},
+                      {"best_objective", opt(job.progress.best_objective)},
+                      {"progress_at", opt(job.progress.at)}};
   if (with_spec) {
     j["spec"] = json_cell(job.spec_json, "spec_json");
     j["resolved_spec"] = job.resolved_spec_json.empty() ? nlohmann::json(nullptr)

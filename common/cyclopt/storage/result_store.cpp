@@ -21,7 +21,8 @@ constexpr const char* kJobColumns =
     "j.id, j.request_id, j.scene, j.task, j.spec_json, j.state, j.cancel_requested, j.attempts, j.submitted_at, "
     "j.started_at, j.finished_at, j.points_total, "
     "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error, "
-    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json, j.isa_level, j.build_flags";
+    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json, j.isa_level, j.build_flags, "
+    "j.progress_percent, j.phase, j.eta_seconds, j.best_objective, j.progress_at";
 
 std::optional<double> optional_real(const Statement& s, int col) {
   return s.is_null(col) ? std::nullopt : std::optional<double>(s.real(col));
@@ -51,6 +52,7 @@ JobRecord read_job(const Statement& s) {
   r.resolved_spec_json = s.text(19);
   r.isa_level = s.text(20);
   r.build_flags = s.text(21);
+  r.progress = {optional_real(s, 22), s.text(23), optional_real(s, 24), optional_real(s, 25), optional_real(s, 26)};
   return r;
 }
 
@@ -111,6 +113,9 @@ void add_missing_columns(Connection& db) {
     db.exec("ALTER TABLE jobs ADD COLUMN resolved_spec_json TEXT NOT NULL DEFAULT ''");
   if (!columns.count("isa_level")) db.exec("ALTER TABLE jobs ADD COLUMN isa_level TEXT NOT NULL DEFAULT ''");
   if (!columns.count("build_flags")) db.exec("ALTER TABLE jobs ADD COLUMN build_flags TEXT NOT NULL DEFAULT ''");
+  for (const char* real : {"progress_percent", "eta_seconds", "best_objective", "progress_at"})
+    if (!columns.count(real)) db.exec(std::string("ALTER TABLE jobs ADD COLUMN ") + real + " REAL");
+  if (!columns.count("phase")) db.exec("ALTER TABLE jobs ADD COLUMN phase TEXT NOT NULL DEFAULT ''");
   std::set<std::string> solution_columns;
   {
     Statement q(db, "PRAGMA table_info(solutions)");
@@ -325,6 +330,19 @@ CancelOutcome ResultStore::cancel(std::int64_t job_id) {
 void ResultStore::set_points_total(std::int64_t job_id, int total) {
   std::lock_guard lock(mutex_);
   Statement(db_, "UPDATE jobs SET points_total = ? WHERE id = ?").bind(1, std::int64_t{total}).bind(2, job_id).run();
+}
+
+void ResultStore::set_progress(std::int64_t job_id, const JobProgressRecord& p) {
+  std::lock_guard lock(mutex_);
+  Statement(db_, "UPDATE jobs SET progress_percent = ?, phase = ?, eta_seconds = ?, best_objective = ?, progress_at = ? "
+                 "WHERE id = ?")
+      .bind(1, p.percent)
+      .bind(2, p.phase)
+      .bind(3, p.eta_seconds)
+      .bind(4, p.best_objective)
+      .bind(5, p.at)
+      .bind(6, job_id)
+      .run();
 }
 
 void ResultStore::add_curve(std::int64_t job_id, int curve_index, const std::string& name,

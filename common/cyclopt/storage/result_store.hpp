@@ -94,6 +94,8 @@ class ResultStore {
 
   // Results.
   void set_points_total(std::int64_t job_id, int total);
+  // The job's last progress (results_schema.hpp), replacing the one before.
+  void set_progress(std::int64_t job_id, const JobProgressRecord& progress);
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
   std::set<PointKey> stored_points(std::int64_t job_id);

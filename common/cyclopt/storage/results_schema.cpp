@@ -27,7 +27,12 @@ CREATE TABLE IF NOT EXISTS jobs (
   seeds_json TEXT NOT NULL DEFAULT '{}',
   resolved_spec_json TEXT NOT NULL DEFAULT '',
   isa_level TEXT NOT NULL DEFAULT '',
-  build_flags TEXT NOT NULL DEFAULT ''
+  build_flags TEXT NOT NULL DEFAULT '',
+  progress_percent REAL,
+  phase TEXT NOT NULL DEFAULT '',
+  eta_seconds REAL,
+  best_objective REAL,
+  progress_at REAL
 );
 CREATE INDEX IF NOT EXISTS jobs_by_state ON jobs (state, id);
 CREATE TABLE IF NOT EXISTS events (

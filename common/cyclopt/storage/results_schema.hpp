@@ -1,5 +1,5 @@
 #pragma once
-// The SQLite schema of the results database (version 4, kSchemaVersion). The database runs in WAL mode with
+// The SQLite schema of the results database (version 5, kSchemaVersion). The database runs in WAL mode with
 // synchronous=NORMAL and foreign keys on: every committed point survives a kill -9 of the server.
 //
 //   jobs          one row per accepted submission; also the durable queue.
@@ -33,8 +33,15 @@
 //                                         are bitwise reproducible by a build of the same level
 //     build_flags   TEXT                  the compiler and its code-generation flags
 //                                         ('' for both before version 4)
+//     progress_percent, phase, eta_seconds, best_objective, progress_at  the job's last recorded
+//                                         progress (service/progress_meter.hpp), written at every
+//                                         phase change, every few seconds and when the job ends:
+//                                         percent 0..100 (100 only for a finished job), the phase
+//                                         text, the ETA in s, the best objective so far (NULL:
+//                                         unknown), Unix seconds of the record (NULLs before version 5)
 //   events        append-only log: (id, job_id, at, kind, message); kinds: submitted, started,
-//                 requeued, cancel_requested, done, failed, cancelled, interrupted
+//                 requeued, cancel_requested, done, failed, cancelled, interrupted, phase (the
+//                 running job entered a phase: message "PHASE | 42% | ETA 3:05 | best 0.0226")
 //   curves        (id, job_id, curve_index, name, parameter_name), UNIQUE(job_id, curve_index):
 //                 a branch of a continuation, or the single curve of a sweep
 //   solutions     one row per solved point, UNIQUE(job_id, curve_index, point_index) so a resumed
@@ -56,7 +63,7 @@
 // 2 the same tables, with values_json and the "json" trajectories holding the records of the
 // result contract (records/: gait, solver, walker point, foot comparison) and the version checked
 // on open; 3 adds jobs.program_version, seeds_json and resolved_spec_json (reproducible results); 4
-// adds jobs.isa_level and build_flags. Migrating adds the columns an older file lacks and records
+// adds jobs.isa_level and build_flags; 5 the jobs' last progress (progress_percent .. progress_at). Migrating adds the columns an older file lacks and records
 // the current version.
 //
 // Example queries: docs/results.md, "The database".
@@ -65,7 +72,7 @@
 
 namespace cyclopt::storage {
 
-inline constexpr int kSchemaVersion = 4;
+inline constexpr int kSchemaVersion = 5;
 
 // DDL creating every table and index (IF NOT EXISTS, so it is idempotent).
 std::string_view results_schema_sql();

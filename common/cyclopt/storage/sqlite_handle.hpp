@@ -46,6 +46,7 @@ class Statement {
   Statement& bind(int i, double v);
   Statement& bind(int i, std::string_view v);
   Statement& bind(int i, std::nullopt_t);
+  Statement& bind(int i, const std::optional<double>& v) { return v ? bind(i, *v) : bind(i, std::nullopt); }
   Statement& bind_blob(int i, std::string_view bytes);
 
   bool step();  // true: a row is available; false: done

@@ -39,6 +39,10 @@ constexpr int kQpIterations = 20000;
 
 // A coarse solve that ends with at most this constraint violation found a gait on the coarse grid.
 constexpr double kCoarseFeasible = 1e-6;
+// The ETA's guess of a closure pass's solves per grid speed until one was measured: most speeds
+// have no start left to try, the others start next to an optimum (measured on point feet, 21
+// speeds: a pass took 3 s, 0.34 multistart solves' time per speed; bench/results/progress_honesty.txt).
+constexpr double kClosureSolvesPerSpeed = 0.5;
 
 bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
@@ -84,7 +88,10 @@ class Sweep {
   // Local solves at v from `starts`. coarse_first: a batch of perturbed starts, solved at
   // options.coarse_points first (SpeedSweepOptions::coarse_points).
   nlp::MultistartResult solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first = false);
-  nlp::MultistartResult solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts);
+  // `before`: solves of the phase in earlier batches (a coarse batch before its polish), so the
+  // phase's count runs on (20/22 .. 22/22) instead of starting again.
+  nlp::MultistartResult solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts,
+                                    int before = 0);
   // Multistart from perturbations of the automatic starting gait at v (none if it has no real solution).
   nlp::MultistartResult gait_multistart_at(double v, int* solves = nullptr);
   // Opens a curve through the optimum x at v and continues it both ways, unless there is none or it
@@ -133,6 +140,7 @@ class Sweep {
   void mark_tried(std::size_t i, const CurvePoint& p) { tried_starts_.insert({i, p.curve_id, p.parameter}); }
   void select_best();
   void begin_phase(SweepPhase phase, std::string detail, int total);
+  int label(int curve_id) const { return curve_id + o_.curve_label_offset; }  // as texts name it
   void report();  // o_.on_progress of the current state; callers hold progress_mutex_
   double eta_seconds() const;
   // A converged point: marks its grid speed reached; `step`: it is the running run's next point.
@@ -170,6 +178,11 @@ class Sweep {
   Clock::time_point batch_start_;
   double continuation_wall_ = 0.0;              // of finished runs
   int recoveries_left_ = 0;                     // unreached speeds with curves not tried yet (in recovery)
+  Clock::time_point closure_start_;             // of the closure
+  std::size_t closure_visited_ = 0;             // grid speeds the closure's passes went through
+  std::size_t closure_next_ = 0;                // the pass's grid speed being solved
+  int closure_solved_ = 0;                      // grid speeds with starts the closure solved
+  bool closure_ended_ = false;
 };
 
 void Sweep::begin_phase(SweepPhase phase, std::string detail, int total) {
@@ -198,16 +211,26 @@ double Sweep::eta_seconds() const {
   const double batch_wall = progress_.phase == SweepPhase::multistart ? seconds_since(batch_start_) : 0.0;
   const double solve_rate = computed_solves_ > 0 ? (r_.multistart_seconds + batch_wall) / computed_solves_ : SweepProgress::kNaN;
   const int unreached = progress_.speeds_total - progress_.speeds_reached;
-  if (progress_.phase == SweepPhase::closure) return SweepProgress::kNaN;  // its passes cannot be foreseen
+  // The closure: the grid speeds of the pass left at its measured seconds per speed (once a speed
+  // with starts was solved; before, kClosureSolvesPerSpeed solves per speed); one pass - whether
+  // another follows cannot be foreseen.
+  double closure = 0.0;
+  if (o_.closure.enabled && !closure_ended_) {
+    const double per_speed = closure_solved_ > 0 && closure_visited_ > 0 ? seconds_since(closure_start_) / closure_visited_
+                                                                         : kClosureSolvesPerSpeed * solve_rate;
+    const std::size_t visited = progress_.phase == SweepPhase::closure ? closure_next_ : 0;
+    closure = static_cast<double>(o_.speeds.size() - visited) * per_speed;
+  }
+  if (progress_.phase == SweepPhase::closure) return closure;
   if (progress_.phase == SweepPhase::recovery) {
     const int done = static_cast<int>(r_.recoveries.size());
     const double per_target = done > 0 ? r_.recovery_seconds / done : o_.starts * solve_rate;
-    return recoveries_left_ * per_target;
+    return recoveries_left_ * per_target + closure;
   }
   const int batch_left = progress_.phase == SweepPhase::multistart ? progress_.phase_total - progress_.phase_done : 0;
   const double speed_rate = progress_.speeds_reached > 0 && continuation_wall_ > 0.0
                                 ? continuation_wall_ / progress_.speeds_reached : solve_rate;
-  return (seed_batches_left_ * o_.starts + batch_left) * solve_rate + unreached * speed_rate;
+  return (seed_batches_left_ * o_.starts + batch_left) * solve_rate + unreached * speed_rate + closure;
 }
 
 void Sweep::report() {
@@ -231,12 +254,14 @@ nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> s
                run.constraint_violation <= kCoarseFeasible;
       }))
     return c;
-  nlp::MultistartResult fine = solve_batch(model_, v, optima.empty() ? std::move(starts) : std::move(optima));
+  nlp::MultistartResult fine = solve_batch(model_, v, optima.empty() ? std::move(starts) : std::move(optima),
+                                           static_cast<int>(c.runs.size()));
   fine.runs.insert(fine.runs.begin(), c.runs.begin(), c.runs.end());  // every solve counts
   return fine;
 }
 
-nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts) {
+nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& model, double v, std::vector<Eigen::VectorXd> starts,
+                                         int before) {
   const walker::GaitProblemOptions po = at_speed(v);
   nlp::MultistartOptions mo;
   mo.solver = walker::distant_start_solver(o_.continuation.corrector);
@@ -248,13 +273,13 @@ nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& mode
   const int n = static_cast<int>(starts.size());
   {
     const std::lock_guard lock(progress_mutex_);
-    progress_.phase_total = n;
+    progress_.phase_total = before + n;
     batch_start_ = Clock::now();
   }
   const int computed_before = computed_solves_;
   mo.on_progress = [&](int done, double best) {
     const std::lock_guard lock(progress_mutex_);
-    progress_.phase_done = done;
+    progress_.phase_done = before + done;
     computed_solves_ = computed_before + done - resumed;
     // The lowest objective seen in the phase (begin_phase resets it for a seed batch).
     if (std::isfinite(best) && !(best >= progress_.best_objective)) progress_.best_objective = best;
@@ -482,7 +507,7 @@ void Sweep::run_task(const Task& t, const std::vector<double>& grid, std::option
   const Clock::time_point run_start = Clock::now();
   char detail[96];
   std::snprintf(detail, sizeof detail, "run %d from %.4g m/s %s, curve %d", runs_begun_ + 1, t.speed,
-                t.direction > 0 ? "upwards" : "downwards", t.curve_id);
+                t.direction > 0 ? "upwards" : "downwards", label(t.curve_id));
   begin_phase(run_phase_, detail, static_cast<int>(grid.size()) - 1);
   const int number = runs_begun_++;
   RunOutcome o = compute_run(t, grid, number, r_.curves, std::move(recorded), nullptr);
@@ -510,7 +535,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   const Clock::time_point run_start = Clock::now();
   char detail[96];
   std::snprintf(detail, sizeof detail, "runs %d and %d from %.4g m/s upwards and downwards, curve %d", first + 1, first + 2,
-                up.speed, up.curve_id);
+                up.speed, label(up.curve_id));
   begin_phase(run_phase_, detail,
               static_cast<int>(up_grid.size() + down_grid.size()) - 2);
   runs_begun_ += 2;
@@ -605,7 +630,7 @@ void Sweep::recover(const Target& target) {
   a.speed = v;
   const bool retry = target.unreached && unreached_curves_[target.index] >= 0;
   a.trigger = target.unreached ? (retry ? "unreached, again from curves opened since" : "unreached")
-                               : "dominated? curve " + std::to_string(target.seeds.front()->curve_id) + " is best at " +
+                               : "dominated? curve " + std::to_string(label(target.seeds.front()->curve_id)) + " is best at " +
                                      std::to_string(target.seeds.front()->parameter) + " m/s";
   // A recovered point must beat the selected one (if any) by more than same_objective.
   const CurvePoint* current = best_at(v);
@@ -626,7 +651,7 @@ void Sweep::recover(const Target& target) {
   for (const CurvePoint* p : target.seeds) {
     mark_tried(target.index, *p);
     starts.push_back(p->x);
-    curves += (curves.empty() ? "" : ", ") + std::to_string(p->curve_id) + " at " + std::to_string(p->parameter);
+    curves += (curves.empty() ? "" : ", ") + std::to_string(label(p->curve_id)) + " at " + std::to_string(p->parameter);
   }
   const nlp::MultistartResult r1 = starts.empty() ? nlp::MultistartResult{} : solve_from(v, starts);
   bool found = !starts.empty() && take(r1, SweepStep::neighbour_start);
@@ -720,6 +745,11 @@ std::vector<const CurvePoint*> Sweep::closure_starts(std::size_t i) {
 bool Sweep::closure_pass(int pass) {
   bool improved = false;
   for (std::size_t i = 0; i < o_.speeds.size() && !stopped_; ++i) {
+    {
+      const std::lock_guard lock(progress_mutex_);  // eta_seconds reads them
+      closure_next_ = i;
+      closure_visited_ = static_cast<std::size_t>(pass - 1) * o_.speeds.size() + i;
+    }
     const std::vector<const CurvePoint*> from = closure_starts(i);
     if (from.empty()) continue;
     ++closure_passes_[i];
@@ -730,6 +760,10 @@ bool Sweep::closure_pass(int pass) {
     std::vector<Eigen::VectorXd> starts;
     for (const CurvePoint* p : from) starts.push_back(p->x);
     const nlp::MultistartResult m = solve_from(v, std::move(starts));
+    {
+      const std::lock_guard lock(progress_mutex_);
+      ++closure_solved_;
+    }
     r_.closure.solves += static_cast<int>(m.runs.size());
     if (m.optima.empty()) continue;
     const double f = m.optima.front().objective;
@@ -757,6 +791,10 @@ void Sweep::close_envelope() {
   const Clock::time_point t0 = Clock::now();
   closure_passes_.assign(o_.speeds.size(), 0);
   run_phase_ = SweepPhase::closure;
+  {
+    const std::lock_guard lock(progress_mutex_);
+    closure_start_ = t0;
+  }
   while (!stopped_) {
     if (c.passes >= o_.closure.max_passes) {
       c.reason = "max_passes (" + std::to_string(o_.closure.max_passes) + ") passes each improved a point";
@@ -777,6 +815,8 @@ void Sweep::close_envelope() {
   }
   if (stopped_ && !c.closed && c.reason.empty()) c.reason = "stopped";
   c.seconds = seconds_since(t0);
+  const std::lock_guard lock(progress_mutex_);
+  closure_ended_ = true;
 }
 
 void Sweep::select_best() {

@@ -131,6 +131,10 @@ struct SpeedSweepOptions {
   // instead of 41.7 s; P2-shoes HMT (with R2 after a failed dominance R1) every speed as good or
   // better (2.3 m/s f_mech 0.0427 instead of 0.0497) in the same time.
   int coarse_points = 100;
+  // What texts (progress, recovery triggers and reasons) add to a curve id when they name a
+  // curve: the caller's number of the curve (a sweep job stores curve c as curve_index c + 1), so
+  // progress, query and plots use one numbering.
+  int curve_label_offset = 0;
   std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
   SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
   // Called when a phase begins, after every multistart solve and at every converged grid point

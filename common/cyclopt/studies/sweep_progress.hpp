@@ -5,7 +5,10 @@
 // grid speed reached by continuation so far times the speeds not reached yet (until a
 // continuation run has reached a speed, one multistart solve per speed stands in for it). The
 // recovery steps R1-R3 (speed_sweep.hpp) cannot be foreseen: in them the ETA counts the targets
-// left at the mean time of the recoveries so far.
+// left at the mean time of the recoveries so far. Every phase's ETA adds one closure pass over the
+// grid (at its measured seconds per speed, before it at half a solve per speed); in the closure,
+// the rest of the pass. Whether further recoveries (dominance tests) or passes follow is not known
+// ahead: the job's percentage then holds (service/progress_meter.hpp) instead of going back.
 
 #include <limits>
 #include <string>

@@ -141,10 +141,9 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   o.journal = sweep_journal(ctx);
   // Progress names the foot and the phase of its sweep. Points count the grid speeds of the feet
   // already swept (their best points are stored, whichever unit swept them: units may run at
-  // once) and of this foot; the ETA counts the feet not yet swept as if swept one after another
-  // at this foot's pace (an upper bound where units run in parallel).
-  const auto started = std::chrono::steady_clock::now();
-  auto counted = started - kFeetSweptRecount;
+  // once) and of this foot; the ETA is this foot's sweep's: the server adds the feet not begun
+  // (service/progress_meter.hpp), knowing how many units run at once.
+  auto counted = std::chrono::steady_clock::now() - kFeetSweptRecount;
   int swept = 0;
   PhaseProgress progress(ctx, {.curve_id = 1 + unit.index, .points_total = feet * speeds});
   o.continuation.corrector.on_iteration = progress.iterations();
@@ -156,10 +155,9 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
     ProgressReport r = sweep_progress_report(sp, "foot " + std::to_string(k + 1) + "/" + std::to_string(feet) + " " +
                                                      job.feet[k].name);
     r.curve_id = 1 + unit.index;
+    r.phase = r.message + ": " + without_curve_number(r.phase);  // a phase change names its foot
     r.points_done = swept * speeds + sp.speeds_reached;
     r.points_total = feet * speeds;
-    const double per_foot = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() + sp.eta_seconds;
-    r.eta_seconds = sp.eta_seconds + static_cast<double>(std::max(0, feet - 1 - swept)) * per_foot;
     progress.set(r);
   };
   const studies::FootSweepSummary s = studies::sweep_foot(job.feet[k].name, model, job.walker.problem, o, [&](const studies::CurvePoint&) {

@@ -367,7 +367,8 @@ bool DesignUnit::on_density(int k, const studies::DensityDesign& d, studies::Des
 studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   studies::FootDesignOptions o = job_.design;
   o.journal = [this](const std::string& part) { return sweep_journal(ctx_, part + "/"); };
-  // Progress: the step (density and phase) as the message, the sweep's or multistart's phase.
+  // Progress: the step (density and phase) as the message and the phase, with the sweep's or
+  // multistart's phase after it (so a phase change names its density).
   o.sweep.continuation.corrector.on_iteration = progress.iterations();
   o.sweep.continuation.corrector.should_stop = stop_predicate(ctx_);
   o.on_step = [this, &progress](const std::string& s) {
@@ -375,17 +376,19 @@ studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
       const std::lock_guard lock(mutex_);
       step_ = s;
     }
-    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s});
+    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s, .phase = s});
     return running();
   };
   o.sweep.on_progress = [this, &progress](const studies::SweepProgress& sp) {
     ProgressReport r = sweep_progress_report(sp, step());
+    r.phase = r.message + ": " + without_curve_number(r.phase);
     r.points_done = stored_;
     r.points_total = total_points(job_);
     progress.set(r);
   };
   o.on_multistart_progress = [this, &progress](double, int done, double best) {
-    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = step(), .phase = "design multistart",
+    const std::string s = step();
+    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s, .phase = s + ": design multistart",
                   .phase_done = done, .phase_total = job_.walker.starts, .best_objective = best});
   };
   return o;

@@ -4,8 +4,9 @@
 // envelope's closure, the best point per speed. The walker fields of walker_job_spec.hpp and the
 // "continuation" block of continuation_fields.hpp.
 //
-// Storage: curve c + 1 holds solution curve c, its points stored the moment they exist
-// (walker_points.hpp); curve 0 the best point per speed once the sweep is done, each a walker
+// Storage: curve c + 1 holds the sweep's solution curve c, its points stored the moment they exist
+// (walker_points.hpp), named "solution curve c + 1": progress, recovery texts, query and plots
+// number curves by curve_index; curve 0 the best point per speed once the sweep is done, each a walker
 // point with a records::SweepBestRecord beside it (which step found it, or why none was found,
 // and how sure it is). A resumed sweep replays what an earlier attempt finished from its journal
 // (sweep_checkpoints.hpp).
@@ -63,6 +64,7 @@ void run_sweep(const SweepJob& job, JobContext& ctx) {
   so.on_progress = [&](const studies::SweepProgress& p) { progress.set(sweep_progress_report(p, "speed sweep")); };
   so.continuation.corrector.should_stop = stop_predicate(ctx);
   so.journal = sweep_journal(ctx);  // a resumed sweep reuses what an earlier attempt finished
+  so.curve_label_offset = 1;        // texts name curves by their curve_index (CurveStore below)
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
   CurveStore store(ctx, family, 1, false);

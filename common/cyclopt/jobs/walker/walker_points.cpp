@@ -88,7 +88,7 @@ storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKe
 
 bool CurveStore::operator()(const continuation::CurvePoint& c) {
   const int curve = c.curve_id + offset_;
-  if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(c.curve_id), family_.parameter_name);
+  if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(curve), family_.parameter_name);
   const int index = counts_[curve]++;
   WalkerPoint w = point(c, {curve, index});
   w.row.required = grid_points_required_ && c.on_grid;
