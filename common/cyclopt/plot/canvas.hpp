@@ -49,6 +49,7 @@ class Canvas {
   void circle(Point center, double radius, Color fill);
   void rectangle(Point top_left, double w, double h, Color stroke, Color fill, double width);
   // Text with its baseline at p.y, aligned horizontally at p.x; rotated by `degrees` about p.
+  // `s` may hold sub- and superscripts (rich_text.hpp: "x_{H}^{-}").
   void text(Point p, std::string_view s, double size, Color c, Align align = Align::left, double degrees = 0,
             bool bold = false);
   double text_width(std::string_view s, double size, bool bold = false);

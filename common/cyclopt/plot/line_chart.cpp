@@ -70,6 +70,7 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
         ys.push_back(b.high[i]);
       }
   }
+  for (const ReferenceLine& r : chart.reference_lines) ys.push_back(r.y);
   Canvas canvas(path, options.width, options.height);
   canvas.fill_background({1, 1, 1, 1});
   Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(value_range(ys)),
@@ -79,12 +80,18 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   std::vector<Point> occupied;
   std::vector<LegendEntry> legend;
   for (const Band& b : chart.bands) draw_band(axes, canvas, b);
+  for (const ReferenceLine& r : chart.reference_lines) {
+    const Point a = axes.to_pixel(axes.x_range().lo, r.y), b = axes.to_pixel(axes.x_range().hi, r.y);
+    canvas.line(a, b, kReferenceLineColor, 1.6, true);
+    canvas.text({b.x - 6, b.y - 6}, r.label, 13, kReferenceLineColor, Align::right);
+    occupied.push_back({b.x - 60, b.y - 10});
+  }
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     const Series& s = chart.series[i];
     const Color c = s.color.value_or(palette(static_cast<int>(i)));
     std::vector<Point> run;
     auto flush = [&]() {
-      canvas.polyline(run, c, 2.2, s.dashed);
+      canvas.polyline(run, c, s.width, s.dashed);
       run.clear();
     };
     for (std::size_t j = 0; j < s.x.size(); ++j) {

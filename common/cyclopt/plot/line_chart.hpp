@@ -16,6 +16,7 @@ struct Series {
   bool markers = true;
   bool dashed = false;
   std::optional<Color> color;  // default: palette(index)
+  double width = 2.2;          // line width (px)
 };
 
 // A shaded area between two edges over the same x (e.g. the spread of several searches above
@@ -25,10 +26,19 @@ struct Band {
   Color color;                       // drawn translucent
 };
 
+// A horizontal line across the plot area (e.g. the stability limit |Λ| = 1), dashed, its label
+// above its right end; the value axis always shows it.
+struct ReferenceLine {
+  double y = 0;
+  std::string label;
+};
+inline constexpr Color kReferenceLineColor{0.45, 0.1, 0.45, 1};
+
 struct LineChart {
   AxesStyle axes;
   std::vector<Series> series;
   std::vector<Band> bands;
+  std::vector<ReferenceLine> reference_lines;
   std::optional<Range> x_range, y_range;  // default: fitted to the data (y: value_range())
 };
 

@@ -47,6 +47,10 @@ struct Scene {
   double legend_headroom = 0;      // pixels kept empty above the content for the legend
 };
 
+// The width (px) of the HTML report's column: a figure at most this wide is shown at its own size,
+// so its letters are as large as every other figure's.
+inline constexpr double kPageWidth = 940;
+
 // Options whose size gives the scene's content (with its pad and legend room) the plot area's
 // aspect ratio, so equal scales waste no space: `height` pixels high, or, where that would be wider
 // than max_width, max_width wide and as high as the content then needs; at least min_width wide.

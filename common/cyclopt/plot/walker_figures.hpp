@@ -27,6 +27,10 @@ struct Figure {
 
 const std::vector<std::string>& walker_figure_kinds();
 
+// The converged gait with a trajectory nearest `speed` (NaN: the middle of the converged speeds) of
+// the job: the stroboscope's and the report's within-step figures' gait; nullptr when there is none.
+const GaitPoint* chosen_point(const WalkerJobResults& job, double speed);
+
 // Throws std::invalid_argument for an unknown kind (naming the known ones) or when the jobs hold
 // nothing to draw for it (no converged gait, no trajectory, point feet for "foot").
 // `speed` (m/s) selects the stroboscope's gait; NaN: the middle of the converged points.
