@@ -9,6 +9,7 @@
 #include "cyclopt/plot/gait_animation.hpp"
 #include "cyclopt/plot/gait_stroboscope.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/pdf_report.hpp"
 #include "cyclopt/plot/point_diagnostics.hpp"
 #include "cyclopt/plot/speed_charts.hpp"
 #include "cyclopt/plot/step_figures.hpp"
@@ -564,6 +565,26 @@ TEST_F(WalkerFigures, SolutionCurvesChartDrawsEveryStoredCurveOverTheEnvelope) {
   EXPECT_EQ(chart.series[2].y.size(), 2u);
   EXPECT_EQ(chart.series[2].y[1], r.points[1].gait.objective);
   EXPECT_NE(chart.axes.y_label.find("f_{mech}"), std::string::npos);
+}
+
+// Issue 54 item 4: the report as a PDF (cairo): a PDF document whose pages are the text pages and
+// one page per drawn figure (the SVG-only animations left out).
+TEST_F(WalkerFigures, ReportAsPdfHasAPagePerFigureAfterItsText) {
+  const Report report = walker_job_report(document_of(2, *hmt_));
+  std::size_t drawn = 0;
+  for (const ReportSection& s : report.sections)
+    for (const ReportFigure& f : s.figures) drawn += static_cast<bool>(f.draw);
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  EXPECT_EQ(drawn, report_svgs(r) - 2) << "every figure but the two animations";
+  const fs::path pdf = out_dir() / "report.pdf";
+  write_pdf(report, pdf.string());
+  const std::string bytes = text_of(pdf);
+  EXPECT_EQ(bytes.rfind("%PDF-", 0), 0u);
+  std::size_t pages = 0;
+  for (std::size_t at = bytes.find("/Type /Page"); at != std::string::npos; at = bytes.find("/Type /Page", at + 1))
+    pages += bytes.compare(at, 12, "/Type /Pages") != 0;
+  EXPECT_GT(pages, drawn) << "text pages, then one per figure";
+  EXPECT_LT(pages, drawn + 6);
 }
 
 TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {

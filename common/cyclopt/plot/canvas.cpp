@@ -57,12 +57,19 @@ Canvas::Canvas(const std::string& path, double width, double height)
   cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
 }
 
+Canvas::Canvas(cairo_t* cr, double width, double height)
+    : width_(width), height_(height), png_(false), finished_(true), owned_(false), cr_(cr) {
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+}
+
 Canvas::~Canvas() {
   try {
     finish();
   } catch (...) {
     // A destructor must not throw; callers who care call finish() themselves.
   }
+  if (!owned_) return;
   if (cr_) cairo_destroy(cr_);
   if (surface_) cairo_surface_destroy(surface_);
 }

@@ -113,7 +113,7 @@ Report foot_design_report(const nlohmann::json& doc) {
   ReportSection figures;
   figures.heading = "Figures";
   std::vector<std::string> not_drawn;
-  for (const Figure& f : foot_design_figures(c, &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
+  for (const Figure& f : foot_design_figures(c, &not_drawn)) figures.figures.push_back(report_figure(f));
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
   report.sections = {provenance_section(doc), designs, point_diagnostics_section(doc)};
   for (const DesignedDensity& d : c.densities) {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct ReportListing {
 struct ReportFigure {
   std::string caption;
   std::string svg;  // a complete <svg> document, e.g. from svg_of()
+  // The drawing itself for the PDF (pdf_report.hpp) on a canvas of `size`; empty for a figure
+  // that is SVG only (the animations), which the PDF leaves out.
+  std::function<void(Canvas&)> draw;
+  RenderOptions size;
 };
 
 struct ReportSection {

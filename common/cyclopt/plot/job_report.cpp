@@ -28,7 +28,7 @@ ReportSection figure_section(const std::function<std::vector<Figure>(std::vector
   s.heading = "Figures";
   std::vector<std::string> not_drawn;
   try {
-    for (const Figure& f : draw(&not_drawn)) s.figures.push_back({f.caption, svg_of(f)});
+    for (const Figure& f : draw(&not_drawn)) s.figures.push_back(report_figure(f));
   } catch (const std::invalid_argument& e) {
     not_drawn.push_back(e.what());
   }

@@ -43,10 +43,8 @@ void draw_band(const Axes& axes, Canvas& canvas, const Band& b) {
   flush();
 }
 
-}  // namespace
-
-void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
-  std::vector<double> xs, ys;
+// The finite data of the chart; throws for mismatched or empty series.
+void data_of(const LineChart& chart, std::vector<double>& xs, std::vector<double>& ys) {
   for (const Series& s : chart.series) {
     if (s.x.size() != s.y.size())
       throw std::invalid_argument("series '" + s.label + "': x has " + std::to_string(s.x.size()) + " values, y has " +
@@ -71,7 +69,21 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
       }
   }
   for (const ReferenceLine& r : chart.reference_lines) ys.push_back(r.y);
+}
+
+}  // namespace
+
+void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
+  std::vector<double> xs, ys;
+  data_of(chart, xs, ys);  // throws before a file is made
   Canvas canvas(path, options.width, options.height);
+  draw(chart, canvas);
+  canvas.finish();
+}
+
+void draw(const LineChart& chart, Canvas& canvas) {
+  std::vector<double> xs, ys;
+  data_of(chart, xs, ys);
   canvas.fill_background({1, 1, 1, 1});
   Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(value_range(ys)),
             chart.axes);
@@ -109,7 +121,6 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   axes.reset_clip();
   axes.draw_frame();
   draw_legend(canvas, axes, legend, occupied);
-  canvas.finish();
 }
 
 }  // namespace cyclopt::plot

@@ -53,5 +53,7 @@ void start_at_zero(LineChart& chart);
 // Writes the chart to `path` (.png, .svg or .pdf). Throws std::invalid_argument for series with
 // mismatched lengths or no finite point at all, std::runtime_error when the file cannot be written.
 void render(const LineChart& chart, const std::string& path, const RenderOptions& options = {});
+// The same drawing on a canvas of the caller's (a PDF page).
+void draw(const LineChart& chart, Canvas& canvas);
 
 }  // namespace cyclopt::plot

@@ -58,5 +58,7 @@ RenderOptions fitted_options(const Scene& scene, double height, double min_width
 
 // Writes the scene to `path` (.png, .svg or .pdf); throws std::invalid_argument for an empty scene.
 void render(const Scene& scene, const std::string& path, const RenderOptions& options = {});
+// The same drawing on a canvas of the caller's (a PDF page).
+void draw(const Scene& scene, Canvas& canvas);
 
 }  // namespace cyclopt::plot

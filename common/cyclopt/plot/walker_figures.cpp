@@ -95,6 +95,11 @@ std::vector<std::string> write_figure(const Figure& f, const std::string& dir) {
   return paths;
 }
 
+ReportFigure report_figure(const Figure& f) {
+  return {f.caption, svg_of(f), [drawing = f.drawing](Canvas& c) { std::visit([&c](const auto& d) { draw(d, c); }, drawing); },
+          f.options};
+}
+
 std::string svg_of(const Figure& f) {
   return std::visit([&](const auto& d) { return plot::svg_of(d, f.options); }, f.drawing);
 }

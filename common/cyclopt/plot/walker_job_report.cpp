@@ -64,7 +64,7 @@ ReportSection stroboscope_section(const WalkerJobResults& r, const GaitPoint* ch
     const Figure f{"stroboscope", gait_caption(*p) + ", poses " + report_number(1000 * p->gait.step_period / 6, "%.0f") +
                                       " ms apart",
                    scene, fitted_options(scene, 450, 280, kPageWidth)};
-    s.figures.push_back({f.caption, svg_of(f)});
+    s.figures.push_back(report_figure(f));
   }
   return s;
 }
@@ -110,7 +110,7 @@ Report walker_job_report(const nlohmann::json& doc, double speed) {
     c.tables.push_back(sensitivity_comparison_table(parameters));
     try {
       const Figure f = sensitivity_figure(parameters);
-      c.figures.push_back({f.caption, svg_of(f)});
+      c.figures.push_back(report_figure(f));
     } catch (const std::invalid_argument& e) {
       c.text += std::string(" Not drawn: ") + e.what() + ".";
     }
@@ -124,12 +124,12 @@ Report walker_job_report(const nlohmann::json& doc, double speed) {
                         "All " + std::to_string(r.curves.size()) + " stored solution curves (numbered as `cyclopt query` "
                         "numbers them) and curve 0, the best per speed, as the wide pale envelope (seed 001 Fig. 9.1)",
                         solution_curves_chart(r), {}};
-    figures.figures.push_back({curves.caption, svg_of(curves)});
+    figures.figures.push_back(report_figure(curves));
   } catch (const std::invalid_argument& e) {
     not_drawn.push_back(std::string("solution curves: ") + e.what());
   }
   for (const Figure& f : walker_figures({r}, speed, &not_drawn))
-    if (f.name != "stroboscope") figures.figures.push_back({f.caption, svg_of(f)});
+    if (f.name != "stroboscope") figures.figures.push_back(report_figure(f));
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
   report.sections.push_back(figures);
   const GaitPoint* chosen = chosen_point(r, speed);
@@ -139,7 +139,7 @@ Report walker_job_report(const nlohmann::json& doc, double speed) {
     step.text = "The gait at the " + std::string(std::isfinite(speed) ? "chosen" : "middle converged") +
                 " speed (`cyclopt report --speed V` chooses another) over its relative step time, from impact (0) to "
                 "impact (1). " + gait_caption(*chosen) + ".";
-    for (const Figure& f : within_step_figures(r, *chosen)) step.figures.push_back({f.caption, svg_of(f)});
+    for (const Figure& f : within_step_figures(r, *chosen)) step.figures.push_back(report_figure(f));
   } else {
     step.heading = "Within one step";
     step.text = "No converged gait with a stored trajectory.";
