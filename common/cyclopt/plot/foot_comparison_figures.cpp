@@ -130,7 +130,7 @@ Scene foot_outlines_scene(const FootComparisonCurves& c) {
 std::vector<Figure> foot_comparison_figures(const nlohmann::json& document) {
   const FootComparisonCurves c = foot_comparison_curves(document);
   std::vector<Figure> out;
-  out.push_back({"foot_comparison", "f_mech over speed of every compared foot with the best envelope (seed 001 Fig. 9.19a)",
+  out.push_back({"foot_comparison", "f_{mech} over speed of every compared foot with the best envelope (seed 001 Fig. 9.19a)",
                  foot_comparison_chart(c), {}});
   Scene outlines = foot_outlines_scene(c);
   const RenderOptions size = fitted_options(outlines, 760, 600, kPageWidth);

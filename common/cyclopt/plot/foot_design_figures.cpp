@@ -163,7 +163,7 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
   out.push_back({"foot_design_outlines", "Designed feet per density over the start foot (seed 001 Fig. 10.5/10.6)",
                  std::move(outlines), size});
   try {
-    out.push_back({"foot_design_cost", "f_mech over speed of each density's design (solid) and low-speed design "
+    out.push_back({"foot_design_cost", "f_{mech} over speed of each density's design (solid) and low-speed design "
                                        "(dashed), the start foot and point feet (seed 001 Fig. 10.7)",
                    foot_design_cost_chart(c), {}});
   } catch (const std::invalid_argument& e) {

@@ -68,7 +68,7 @@ ReportTable sensitivity_comparison_table(const std::vector<SensitivityParameter>
   double range = 0.0;
   for (const SensitivityParameter& p : parameters) range = std::max(range, std::isfinite(p.summary.relative_range) ? p.summary.relative_range : 0.0);
   const std::string minus = report_number(-100.0 * range, "%g") + " %", plus = report_number(100.0 * range, "%+g") + " %";
-  t.header = {"parameter", "value", "KKT df/dp", "relative p/f df/dp", "Δf predicted " + minus, "Delta f predicted " + plus,
+  t.header = {"parameter", "value", "KKT df/dp", "relative p/f df/dp", "Δf predicted " + minus, "Δf predicted " + plus,
               "Δf continuation " + minus, "Δf continuation " + plus, "verdict"};
   for (const SensitivityParameter& p : parameters) {
     const records::SensitivitySummaryRecord& s = p.summary;
