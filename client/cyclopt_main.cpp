@@ -10,12 +10,12 @@
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/foot_design_figures.hpp"
-#include "cyclopt/plot/foot_design_report.hpp"
 #include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/job_report.hpp"
+#include "cyclopt/plot/pdf_report.hpp"
 #include "cyclopt/plot/sensitivity_figures.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
-#include "cyclopt/plot/walker_job_report.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
@@ -120,9 +120,12 @@ results database file directly (read-only) when given --db FILE.
                      parameter, continuation and KKT tangent, Fig. 10.1); or
                      giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
-  report JOB [--out FILE.html]
-                     one self-contained HTML page: spec, solved points (per density for a
-                     foot_design job), all figures
+  report JOB [--out FILE.html|FILE.pdf] [--speed V]
+                     one self-contained HTML page: provenance (version, build, seeds,
+                     dates, resolved and submitted spec), solved points (per density for a
+                     foot_design job), solver diagnostics per stored point, all figures;
+                     --speed: the gait shown within its step (default: the middle speed);
+                     FILE.pdf: the same as a PDF (figures as vector pages, no animations)
                      (default FILE: jobJOB.html)
 
 Output of status, list, query: aligned table (times in ISO 8601: query's UTC, list's and
@@ -701,9 +704,10 @@ int report(Session& s, const Options& o) {
   const std::int64_t id = job_argument(o);
   const std::string path = o.out.empty() ? "job" + std::to_string(id) + ".html" : o.out;
   const nlohmann::json doc = job_document(s, id);
-  cyclopt::plot::write_html(doc.value("task", "") == "foot_design" ? cyclopt::plot::foot_design_report(doc)
-                                                                   : cyclopt::plot::walker_job_report(doc),
-                            path);
+  const cyclopt::plot::Report r = cyclopt::plot::job_report(doc, o.speed);
+  const bool pdf = path.size() > 4 && path.compare(path.size() - 4, 4, ".pdf") == 0;
+  if (pdf) cyclopt::plot::write_pdf(r, path);
+  else cyclopt::plot::write_html(r, path);
   std::printf("report of job %lld: %s\n", static_cast<long long>(id), path.c_str());
   return kOk;
 }

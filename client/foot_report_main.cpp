@@ -15,12 +15,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -65,25 +67,55 @@ const cyclopt::foot::FootPreset& preset_named(const std::string& name) {
   return cyclopt::foot::foot_preset(name);
 }
 
+// v in %.*f, a value that rounds to zero shown as 0 ("0.00000", never "-0.00000").
+std::string fixed(double v, int decimals) {
+  if (std::abs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0.0;
+  char b[48];
+  std::snprintf(b, sizeof b, "%.*f", decimals, v);
+  return b;
+}
+
+// The unit and meaning of a foot spec's number `key`: a shape parameter of the model's layout
+// (foot_parameters.hpp), the density or theta_F0; empty when unknown.
+std::pair<std::string, std::string> unit_of(const std::string& model, const std::string& key) {
+  if (key == "density") return {"kg/m^2", "area density rho (appendix E)"};
+  if (key == "theta_F0") return {"rad", "foot angle at rest theta_F0"};
+  for (const cyclopt::foot::FootModel m : {cyclopt::foot::FootModel::hm, cyclopt::foot::FootModel::hmt})
+    if (cyclopt::foot::to_string(m) == model)
+      for (const cyclopt::foot::ParameterInfo& p : cyclopt::foot::parameter_layout(m))
+        if (p.name == key) return {std::string(p.unit), std::string(p.meaning)};
+  return {"", ""};
+}
+
 void print_table(const nlohmann::json& r) {
   const auto& spec = r["spec"];
-  std::printf("foot %s (model %s)\n", spec.value("name", std::string("-")).c_str(), spec["model"].get<std::string>().c_str());
+  const std::string model = spec["model"].get<std::string>();
+  std::printf("foot %s (model %s)\n", spec.value("name", std::string("-")).c_str(), model.c_str());
+  std::printf("  %-12s %12s  %-7s %s\n", "parameter", "value", "unit", "meaning");
   for (const auto& [key, value] : spec.items())
-    if (value.is_number()) std::printf("  %-16s %12.6g\n", key.c_str(), value.get<double>());
-  std::printf("admissible foot angle: [%.4f, %.4f] rad\n", r["admissible_theta"][0].get<double>(),
-              r["admissible_theta"][1].get<double>());
+    if (value.is_number()) {
+      const auto [unit, meaning] = unit_of(model, key);
+      std::printf("  %-12s %12.6g  %-7s %s\n", key.c_str(), value.get<double>() == 0.0 ? 0.0 : value.get<double>(),
+                  unit.empty() ? "-" : unit.c_str(), meaning.c_str());
+    }
+  std::printf("admissible foot angle: [%s, %s] rad\n", fixed(r["admissible_theta"][0].get<double>(), 4).c_str(),
+              fixed(r["admissible_theta"][1].get<double>(), 4).c_str());
   if (r.contains("mass_properties")) {
     const auto& m = r["mass_properties"];
-    std::printf("mass properties (appendix E):\n  area %.6f m^2, mass %.4f kg, CoM (%.4f, %.4f) m from the ankle,\n"
-                "  J_ankle %.6f kg m^2, J_CoM %.6f kg m^2, theta_F0 %.4f rad\n",
-                m["area"].get<double>(), m["mass"].get<double>(), m["com_x"].get<double>(), m["com_z"].get<double>(),
-                m["inertia_ankle"].get<double>(), m["inertia_com"].get<double>(), m["theta_F0"].get<double>());
+    std::printf("mass properties (appendix E):\n  area %s m^2, mass %s kg, CoM (%s, %s) m from the ankle,\n"
+                "  J_ankle %s kg m^2, J_CoM %s kg m^2, theta_F0 %s rad\n",
+                fixed(m["area"].get<double>(), 6).c_str(), fixed(m["mass"].get<double>(), 4).c_str(),
+                fixed(m["com_x"].get<double>(), 4).c_str(), fixed(m["com_z"].get<double>(), 4).c_str(),
+                fixed(m["inertia_ankle"].get<double>(), 6).c_str(), fixed(m["inertia_com"].get<double>(), 6).c_str(),
+                fixed(m["theta_F0"].get<double>(), 4).c_str());
   }
+  std::printf("rolling (ankle A and contact point C while the foot turns through its admissible angles):\n");
   std::printf("%10s %10s %10s %12s %12s %14s\n", "theta/rad", "x_A/m", "z_A/m", "x_AC/m", "z_AC/m", "R/m");
   for (const auto& s : r["rolling"])
-    std::printf("%10.4f %10.5f %10.5f %12.5f %12.5f %14.6g\n", s["theta"].get<double>(), s["ankle_x"].get<double>(),
-                s["ankle_z"].get<double>(), s["contact_x_from_ankle"].get<double>(),
-                s["contact_z_from_ankle"].get<double>(), s["curvature_radius"].get<double>());
+    std::printf("%10s %10s %10s %12s %12s %14.6g\n", fixed(s["theta"].get<double>(), 4).c_str(),
+                fixed(s["ankle_x"].get<double>(), 5).c_str(), fixed(s["ankle_z"].get<double>(), 5).c_str(),
+                fixed(s["contact_x_from_ankle"].get<double>(), 5).c_str(),
+                fixed(s["contact_z_from_ankle"].get<double>(), 5).c_str(), s["curvature_radius"].get<double>());
 }
 
 // One line per preset: name, alias, source; a fitted foot flagged in the catalogue shows its reason.

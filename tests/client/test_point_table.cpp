@@ -8,6 +8,8 @@
 
 #include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/records/foot_design_records.hpp"
+#include "cyclopt/records/gait_records.hpp"
+#include "cyclopt/records/sweep_records.hpp"
 
 #include <gtest/gtest.h>
 
@@ -84,6 +86,47 @@ TEST(PointTable, AComparedFootIsOneLineAndTheEnvelopesSavingTheHeadline) {
   EXPECT_TRUE((*r)["saving_%"].is_null());  // a reference saves nothing against itself
   EXPECT_EQ(comparison_envelope_line(rows), "the best foot at each speed saves 59.1 % mean f_mech against point over 7 speeds");
   EXPECT_FALSE(comparison_envelope_line(nlohmann::json::array({rows[1]})));  // only the reference carries it
+}
+
+// Issue 54: a sweep's table prints every column with its own fixed decimals, and one line of
+// legend says what curve 0 is.
+TEST(PointTable, ASweepTableHasFixedDecimalsPerColumnAndALegend) {
+  records::GaitRecord g;
+  g.real = true;
+  g.objective = g.f_mech = 0.0125;
+  g.f_usq = 0.3;
+  g.mean_speed = 1.0;
+  g.step_length = 0.4;
+  g.step_period = 0.4;
+  g.floquet_multiplier = 0.98;
+  g.stable = true;
+  g.impact_energy_loss = 1.84;
+  g.max_inequality = -0.1;
+  g.speed_equality = 0;
+  g.theta_plus = 3.0;
+  g.theta_minus = 3.3;
+  records::SweepBestRecord best;
+  best.found_by = "multistart at a seed speed at 1 m/s";
+  best.closure = "closed";
+  nlohmann::json values = best;
+  values["gait"] = g;
+  nlohmann::json rows = nlohmann::json::array();
+  for (int k = 0; k < 2; ++k) {
+    g.f_mech = 0.0125 + 0.01 * k;
+    values["gait"] = g;
+    rows.push_back({{"curve", k}, {"point", 0}, {"parameter", 1.0}, {"status", "converged"}, {"values", values}});
+  }
+  std::ostringstream out;
+  print_rows(out, rows, RowFormat::table);
+  const std::string text = out.str();
+  std::printf("%s", text.c_str());
+  for (const char* cell : {"1.000 ", "0.012500", "0.022500", "0.4000", "150.0", "0.9800", "1.840"})
+    EXPECT_NE(text.find(cell), std::string::npos) << cell;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4);  // header, two points, the legend
+  EXPECT_NE(text.find("curve 0: the best point per speed"), std::string::npos);
+  std::ostringstream wide;
+  print_rows(wide, rows, RowFormat::wide);
+  EXPECT_NE(wide.str().find("speed [m/s]"), std::string::npos);
 }
 
 }  // namespace

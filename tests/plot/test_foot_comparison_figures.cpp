@@ -2,6 +2,7 @@
 // layout foot_comparison_kind.hpp stores (its records, records/foot_comparison_records.hpp): every foot's curve, the reference dashed black, the
 // envelope, outlines of the rolling feet only; SVG and PNG are written.
 #include "cyclopt/plot/foot_comparison_figures.hpp"
+#include "cyclopt/plot/job_report.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
@@ -124,4 +125,25 @@ TEST(FootComparisonFigures, RejectsOtherJobs) {
   d = comparison_document();
   d["solutions"] = nlohmann::json::array();
   EXPECT_THROW(plot::foot_comparison_curves(d), std::invalid_argument);
+}
+
+// Issue 54 item 4: a foot comparison's report has the walker reports' provenance box and one
+// diagnostics row per stored point, beside its feet-and-savings table and figures.
+TEST(FootComparisonFigures, ItsReportHasProvenanceDiagnosticsAndSavings) {
+  nlohmann::json doc = comparison_document();
+  doc["program_version"] = "abc1234";
+  doc["isa_level"] = "x86-64-v2";
+  doc["spec"] = {{"scene", "walker"}, {"task", "foot_comparison"}, {"speeds", "1.0:0.5:1.5"}};
+  const plot::Report report = plot::job_report(doc);
+  ASSERT_GE(report.sections.size(), 4u);
+  EXPECT_EQ(report.sections[0].heading, "Provenance");
+  EXPECT_TRUE(report.sections[0].boxed);
+  const plot::ReportSection& diagnostics = report.sections[2];
+  EXPECT_EQ(diagnostics.heading, "Solver diagnostics per stored point");
+  ASSERT_EQ(diagnostics.tables.size(), 1u);
+  EXPECT_EQ(diagnostics.tables[0].rows.size(), doc["solutions"].size());
+  const std::string html = plot::to_html(report);
+  for (const char* text : {"<td>program</td><td>abc1234</td>", "x86-64-v2", "Feet and savings", "<td>60.0</td>",
+                           "P1-shoes-left-HM-SG"})
+    EXPECT_NE(html.find(text), std::string::npos) << text;
 }

@@ -6,6 +6,7 @@
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
 #include "cyclopt/plot/foot_fit_figures.hpp"
+#include "cyclopt/plot/job_report.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,4 +94,15 @@ TEST(FootFitJobFigures, AnUnconvergedOrIncompleteFitIsNotDrawnAndSaysWhy) {
   doc = stored().document;
   doc["task"] = "sweep";
   EXPECT_THROW(plot::foot_fit_job_figures(doc), std::invalid_argument);
+}
+
+// Issue 54 item 4: a foot fit's report: provenance, a diagnostics row for its stored point, its figures.
+TEST(FootFitJobFigures, ItsReportHasProvenanceDiagnosticsAndTheFitsFigures) {
+  const plot::Report r = plot::job_report(stored().document);
+  ASSERT_EQ(r.sections.size(), 3u);
+  EXPECT_EQ(r.sections[0].heading, "Provenance");
+  ASSERT_EQ(r.sections[1].tables.size(), 1u);
+  EXPECT_EQ(r.sections[1].tables[0].rows.size(), 1u);
+  EXPECT_EQ(r.sections[2].figures.size(), 2u) << r.sections[2].text;
+  EXPECT_NE(plot::to_html(r).find("Resolved spec"), std::string::npos);
 }

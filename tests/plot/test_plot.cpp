@@ -3,7 +3,9 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/plot/axes.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/plot/line_chart.hpp"
+#include "cyclopt/plot/rich_text.hpp"
 #include "cyclopt/plot/scene.hpp"
 #include "png_inspection.hpp"
 
@@ -138,6 +140,29 @@ TEST(FootFigures, AnkleTrajectoryChartHasBothCurves) {
   EXPECT_GT(img.count(palette(1)), 150);
 }
 
+// Issue 54: sub- and superscripts and Greek letters in figure text and the report.
+TEST(RichText, SubAndSuperscriptsAreSmallerShiftedRunsInFiguresAndSubSupInHtml) {
+  const std::vector<TextRun> runs = rich_text_runs("x_{H}^{−} − x_{H}^{+} (kg/m^{2}) f_mech a_{b");
+  ASSERT_EQ(runs.size(), 9u);
+  EXPECT_EQ(runs[0].text, "x");
+  EXPECT_EQ(runs[1].text, "H");
+  EXPECT_EQ(runs[1].shift, -1);
+  EXPECT_EQ(runs[2].text, "−");
+  EXPECT_EQ(runs[2].shift, 1);
+  EXPECT_EQ(runs[3].text, " − x");
+  EXPECT_EQ(runs[7].text, "2");
+  EXPECT_EQ(runs[7].shift, 1);
+  EXPECT_EQ(runs[8].text, ") f_mech a_{b") << "plain underscores and an unclosed brace stay text";
+  EXPECT_EQ(rich_text_html("Λ < 1, x_{H}^{−} & m^{2}"), "Λ &lt; 1, x<sub>H</sub><sup>−</sup> &amp; m<sup>2</sup>");
+  EXPECT_EQ(rich_text_plain("x_{H}^{+}"), "xH+");
+  // Drawn: the raised or lowered run is smaller than the same letters on the baseline, and the
+  // markup's braces are not drawn.
+  Canvas c((out_dir() / "rich_text.png").string(), 200, 60);
+  EXPECT_LT(c.text_width("x_{H}", 14), c.text_width("xH", 14));
+  EXPECT_GT(c.text_width("x_{H}", 14), c.text_width("x", 14));
+  EXPECT_LT(c.text_width("m^{2}", 14), c.text_width("m2", 14));
+}
+
 }  // namespace
 }  // namespace cyclopt::plot
 
@@ -152,11 +177,20 @@ TEST(HtmlReport, SelfContainedWithEscapedTextTablesAndInlineFigures) {
   r.subtitle = "machine & date";
   ReportSection s;
   s.heading = "Results";
-  s.code = R"({"foot": "P2 & co"})";
-  s.tables.push_back({{"v (m/s)", "f_mech"}, {{"0.3", "0.12"}, {"1.3", "0.08"}}});
-  s.figures.push_back({"cost of transport", svg_of(two_curves())});
+  s.listings.push_back({"Resolved spec", R"({"foot": "P2 & co"})"});
+  ReportTable table;
+  table.header = {"v (m/s)", "f_mech"};
+  table.rows = {{"0.3", "0.12"}, {"1.3", "0.08"}};
+  table.failed = {false, true};
+  s.tables.push_back(table);
+  ReportFigure figure;
+  figure.caption = "cost of transport";
+  figure.svg = svg_of(two_curves());
+  s.figures.push_back(figure);
   r.sections.push_back(s);
   const std::string html = to_html(r);
+  EXPECT_NE(html.find("<tr class=\"failed\"><td>1.3</td>"), std::string::npos) << "the failed row is marked";
+  EXPECT_NE(html.find("<tr><td>0.3</td>"), std::string::npos);
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("job 7 &lt;sweep&gt;"), std::string::npos);
   EXPECT_NE(html.find("P2 &amp; co"), std::string::npos);
@@ -165,6 +199,7 @@ TEST(HtmlReport, SelfContainedWithEscapedTextTablesAndInlineFigures) {
   EXPECT_EQ(html.find("<?xml"), std::string::npos);       // inlined, not a separate document
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // nothing external
   EXPECT_EQ(html.find("<img"), std::string::npos);
+  EXPECT_NE(html.find("<summary>Resolved spec</summary><pre>"), std::string::npos);
   const fs::path p = out_dir() / "report.html";
   write_html(r, p.string());
   EXPECT_GT(fs::file_size(p), 5000u);

@@ -7,8 +7,12 @@
 #include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/gait_animation.hpp"
+#include "cyclopt/plot/gait_stroboscope.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
+#include "cyclopt/plot/pdf_report.hpp"
+#include "cyclopt/plot/point_diagnostics.hpp"
 #include "cyclopt/plot/speed_charts.hpp"
+#include "cyclopt/plot/step_figures.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/plot/walker_job_report.hpp"
@@ -27,6 +31,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -220,53 +225,50 @@ TEST_F(WalkerFigures, StroboscopeShowsGroundContactPointsFeetAndClearance) {
   ASSERT_TRUE(s.ground_z);
   EXPECT_EQ(*s.ground_z, 0.0);
   int contacts = 0, clearance = 0, closed = 0;
-  for (const Marker& m : s.markers) contacts += m.legend.rfind("rolling contact point C1", 0) == 0;
+  for (const Marker& m : s.markers) contacts += m.color.r == 0.84 && m.radius == 4.0;
   for (const Shape& sh : s.shapes) {
-    clearance += sh.legend.rfind("swing-foot lowest point", 0) == 0;
+    clearance += sh.dashed;
     closed += sh.closed;
   }
-  EXPECT_EQ(contacts, 13);     // 2 steps x 6 intervals + 1
-  EXPECT_EQ(clearance, 2);     // one path per step
-  EXPECT_EQ(closed, 2 * 13);   // both feet in every frame
-  // The contact point moves forwards along the sole during a step and the second step starts one
-  // step length further on.
+  EXPECT_EQ(contacts, 7);     // 1 step x 6 intervals + 1, as in Fig. 9.2
+  EXPECT_EQ(clearance, 1);    // one path per step
+  EXPECT_EQ(closed, 2 * 7);   // both feet in every frame
+  // The contact point moves forwards along the sole during the step.
   EXPECT_LT(s.markers[0].x, s.markers[2 * 6].x);
   // Its own folder: ctest runs the tests of this file in parallel.
   const std::vector<std::string> paths = write_figure(f, (out_dir() / "stroboscope_test").string());
   const testing::PngImage img = testing::inspect_png(paths[0]);
   EXPECT_GT(img.count({0.84, 0.15, 0.16, 1}, 0.1), 100) << "contact points";
   EXPECT_GT(img.count({0.17, 0.63, 0.17, 1}, 0.1), 100) << "clearance path";
-  EXPECT_GT(img.count({0.35, 0.25, 0.15, 1}, 0.1), 500) << "ground";
+  EXPECT_GT(img.count({0.35, 0.25, 0.15, 1}, 0.1), 300) << "ground";
+  // Its legend names them (markup of rich_text.hpp).
+  std::set<std::string> legends;
+  for (const Marker& m : s.markers) legends.insert(m.legend);
+  for (const Shape& sh : s.shapes) legends.insert(sh.legend);
+  EXPECT_TRUE(legends.count("contact point C_{1}"));
+  EXPECT_EQ(std::count_if(legends.begin(), legends.end(), [](const std::string& l) { return l.rfind("swing foot C_{2}", 0) == 0; }), 1);
 }
 
-// Issue 17: the stroboscope drew every frame of a step on the same spot (feet stacked on one place)
-// and left half the picture empty beside the walker. As in Fig. 9.2 the poses now stand side by
-// side along x, each with its own feet, and the drawing fills the picture's width.
-TEST_F(WalkerFigures, StroboscopePosesStandSideBySideAndFillThePicture) {
-  const std::vector<WalkerJobResults> jobs = {walker_job_results(document_of(2, *hmt_))};
-  const Figure f = walker_figure("stroboscope", jobs, 1.2);
-  const Scene& s = std::get<Scene>(f.drawing);
-  // Solid shapes come five per frame (torso, stance leg, swing leg, two feet); the dashed
-  // clearance paths follow each step's frames.
-  std::vector<std::array<double, 2>> frame_x;  // x extent of each frame's drawing
-  int in_frame = 0;
-  for (const Shape& sh : s.shapes) {
-    if (sh.dashed) continue;
-    if (in_frame++ % 5 == 0) frame_x.push_back({1e9, -1e9});
-    for (const auto& p : sh.points) frame_x.back() = {std::min(frame_x.back()[0], p[0]), std::max(frame_x.back()[1], p[0])};
+// Issue 54: the stroboscope's x axis is physical, as in Fig. 9.2 (issue 17 had moved every pose
+// right by a "spread" so they stood side by side): each pose stands where it is, x = 0 at the
+// stance ankle at the impact, and the swing foot's path is the stored one, point by point.
+TEST_F(WalkerFigures, StroboscopeDrawsEveryPoseWhereItIsOnAPhysicalAxis) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const GaitPoint& p = *point_near(r, 1.2);
+  const records::GaitTrajectoryRecord& tr = *p.trajectory;
+  const Scene s = gait_stroboscope(r, p);
+  ASSERT_EQ(s.markers.size(), 2u * 7);  // the contact point and the hip of each of 7 poses
+  EXPECT_DOUBLE_EQ(s.markers[1].x, tr.hip[0].front()) << "the hip at the impact starting the step";
+  EXPECT_DOUBLE_EQ(s.markers[13].x, tr.hip[0].back()) << "the hip at the impact ending it";
+  for (std::size_t f = 1; f < 7; ++f) EXPECT_LT(s.markers[2 * f - 1].x, s.markers[2 * f + 1].x) << "the hip moves on";
+  const Shape& path = s.shapes.back();
+  ASSERT_TRUE(path.dashed);
+  ASSERT_EQ(path.points.size(), tr.swing_contact[0].size());
+  for (std::size_t i = 0; i < path.points.size(); ++i) {
+    EXPECT_EQ(path.points[i][0], tr.swing_contact[0][i]);
+    EXPECT_EQ(path.points[i][1], tr.swing_contact[1][i]);
   }
-  ASSERT_EQ(frame_x.size(), 13u);
-  for (std::size_t n = 1; n < frame_x.size(); ++n) {
-    EXPECT_LT(frame_x[n - 1][1], frame_x[n][0]) << "frame " << n << " overlaps frame " << n - 1;
-    EXPECT_LT(s.markers[2 * (n - 1)].x, s.markers[2 * n].x) << "contact point of frame " << n;
-  }
-  const std::vector<std::string> paths = write_figure(f, (out_dir() / "stroboscope_spread").string());
-  const testing::PngImage img = testing::inspect_png(paths[0]);
-  EXPECT_EQ(img.width, static_cast<int>(f.options.width));
-  // The contact points on the ground (the lower half, below the legend) run across the picture.
-  const std::array<int, 2> contacts = img.columns_of({0.84, 0.15, 0.16, 1}, img.height / 2, img.height, 0.1);
-  ASSERT_GE(contacts[0], 0) << "no contact point drawn";
-  EXPECT_GT(contacts[1] - contacts[0], 0.6 * img.width) << "columns " << contacts[0] << " to " << contacts[1];
+  EXPECT_EQ(s.axes.x_label.find("spread"), std::string::npos) << s.axes.x_label;
 }
 
 TEST_F(WalkerFigures, UnknownKindsAndPointFeetFootFigureAreRejected) {
@@ -277,17 +279,23 @@ TEST_F(WalkerFigures, UnknownKindsAndPointFeetFootFigureAreRejected) {
   EXPECT_THROW(walker_job_results({{"id", 3}, {"scene", "walker"}, {"task", "foot_sweep"}}), std::invalid_argument);
 }
 
+// The figures of a walker job's report (walker_job_report.hpp): the solution curves and every kind
+// over speed but the stroboscope; four within-step charts (three for point feet); a stroboscope
+// of the slowest, chosen and fastest converged gait (as many as differ); an animation per
+// converged gait.
+std::size_t report_svgs(const WalkerJobResults& r) {
+  std::size_t animated = 0;
+  for (const GaitPoint& p : r.points) animated += p.converged && p.trajectory;
+  const bool feet = r.walker.foot.model != foot::FootModel::point;
+  return walker_figure_kinds().size() - (feet ? 0 : 1) + (feet ? 4 : 3) + std::min<std::size_t>(animated, 3) + animated;
+}
+
 TEST_F(WalkerFigures, ReportIsOneSelfContainedPageWithTableAndFigures) {
   const std::string html = to_html(walker_job_report(document_of(2, *hmt_)));
-  EXPECT_NE(html.find("Job specification"), std::string::npos);
+  EXPECT_NE(html.find("<h2>Provenance</h2>"), std::string::npos);
   EXPECT_NE(html.find("P2-shoes-left-HMT"), std::string::npos);
   EXPECT_NE(html.find("<td>1.200</td>"), std::string::npos);
-  std::size_t svgs = 0;
-  for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  std::size_t animated = 0;  // one gait animation per converged speed
-  for (const GaitPoint& p : walker_job_results(document_of(2, *hmt_)).points) animated += p.converged && p.trajectory;
-  ASSERT_GT(animated, 0u);
-  EXPECT_EQ(svgs, walker_figure_kinds().size() + animated);
+  EXPECT_EQ(inline_svgs(html).size(), report_svgs(walker_job_results(document_of(2, *hmt_))));
   EXPECT_EQ(html.find("src=\""), std::string::npos);  // nothing external
 }
 
@@ -325,12 +333,22 @@ TEST_F(WalkerFigures, GaitAnimationHasAClockATimeBarAndItsGaitLabel) {
   const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
   const GaitPoint& p = *point_near(r, 1.2);
   const std::string svg = gait_animation_svg(r, p, 10);
+  const double width = std::stod(svg.substr(svg.find("width=\"") + 7));
   const double height = std::stod(svg.substr(svg.find("height=\"") + 8));
-  EXPECT_GE(height, 500) << "the walker is drawn 420 px high";
+  EXPECT_GE(height, 300) << "the walker is drawn 230 px high";
+  EXPECT_LE(width, 470) << "two animations fit side by side on the 980 px page";
+  // Issue 54: the gait's label is the grid's caption, once, not also inside the animation.
   char label[160];
-  std::snprintf(label, sizeof label, "v = %.2f m/s, step length %.3f m, step period T = %.3f s", p.gait.mean_speed,
-                p.gait.step_length, p.trajectory->time.back());
-  EXPECT_NE(svg.find(label), std::string::npos) << label;
+  std::snprintf(label, sizeof label, "v = %.2f m/s, step length %.3f m, T = %.3f s", p.gait.mean_speed,
+                p.gait.step_length, p.gait.step_period);
+  EXPECT_EQ(svg.find("step length"), std::string::npos);
+  const std::string page = to_html(walker_job_report(document_of(2, *hmt_)));
+  const std::string caption = std::string("<figcaption>") + label + "</figcaption>";
+  const std::size_t grid = page.find("<h2>Gait animations</h2>");
+  ASSERT_NE(grid, std::string::npos);
+  EXPECT_NE(page.find("<div class=\"grid\">", grid), std::string::npos) << "the animations stand in a grid";
+  EXPECT_NE(page.find(caption, grid), std::string::npos) << caption;
+  EXPECT_EQ(page.find(caption, page.find(caption, grid) + 1), std::string::npos) << "one caption per animation";
   // The clock: one text per interval of the 2 x 10 poses, "t = 0.00 s" first (the static picture's),
   // each visible during its interval of the loop.
   const std::size_t clock = svg.find("<g id=\"gait-clock\"");
@@ -372,7 +390,7 @@ TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) 
   const std::vector<std::string> svgs = inline_svgs(html);
   // The figures, then one gait animation (its text not cairo's: no glyphs) per converged speed
   // (1.0 and 1.2 m/s).
-  ASSERT_EQ(svgs.size(), walker_figure_kinds().size() + 2);
+  ASSERT_EQ(svgs.size(), report_svgs(walker_job_results(document_of(2, *hmt_))));
   for (std::size_t i = 0; i < walker_figure_kinds().size(); ++i)
     ASSERT_NE(svgs[i].find("glyph"), std::string::npos) << "a figure without text";
   // The figures as cairo wrote them do share ids (the failure this guards against) ...
@@ -382,6 +400,191 @@ TEST_F(WalkerFigures, ReportFiguresHaveIdsUniqueOnThePageAndDrawTheirOwnGlyphs) 
   EXPECT_NE(std::find(raw2.begin(), raw2.end(), raw1.front()), raw2.end());
   // ... the page does not.
   EXPECT_GT(expect_ids_unique_per_page(html), 50u);
+}
+
+// Issue 54 item 4: the report says where its numbers come from, in a box at its top: program
+// version, build level and flags, seeds, dates, the resolved and the submitted spec.
+TEST_F(WalkerFigures, ReportOpensWithAProvenanceBox) {
+  nlohmann::json doc = document_of(2, *hmt_);
+  doc["program_version"] = "abc1234";
+  doc["isa_level"] = "x86-64-v3";
+  doc["build_flags"] = "GNU 12.2.0 -march=x86-64-v3 -O3";
+  doc["seeds"] = {{"multistart.seed", 7}};
+  doc["submitted_at"] = 1796575209.4;  // 2026-12-06T16:40:09Z
+  doc["resolved_spec"] = doc["spec"];
+  doc["resolved_spec"]["points"] = 123;  // only the resolved spec holds the default
+  const std::string html = to_html(walker_job_report(doc));
+  const std::size_t box = html.find("<section class=\"box\"><h2>Provenance</h2>");
+  ASSERT_NE(box, std::string::npos);
+  const std::string section = html.substr(box, html.find("</section>", box) - box);
+  for (const char* text : {"<td>program</td><td>abc1234</td>", "<td>build level (ISA)</td><td>x86-64-v3",
+                           "GNU 12.2.0 -march=x86-64-v3 -O3", "{&quot;multistart.seed&quot;:7}",
+                           "<td>submitted</td><td>2026-12-06T16:40:09Z</td>", "&quot;points&quot;: 123",
+                           "Resolved spec", "Submitted spec"})
+    EXPECT_NE(section.find(text), std::string::npos) << text;
+  EXPECT_LT(box, html.find("<h2>Solved points")) << "the box comes first";
+  // A job stored before the row held them says so rather than showing blanks.
+  const std::string old = to_html(walker_job_report(document_of(2, *hmt_)));
+  EXPECT_NE(old.find("<td>program</td><td>not recorded"), std::string::npos);
+}
+
+// Issue 54 item 4: one diagnostics row per stored point of every curve, numbered as `cyclopt query`
+// numbers them, a point whose solve did not converge marked.
+TEST_F(WalkerFigures, DiagnosticsTableHasOneRowPerStoredPointAndMarksTheFailedOne) {
+  nlohmann::json doc = document_of(2, *hmt_);
+  nlohmann::json on_curve_1 = doc["solutions"][0];
+  on_curve_1["curve"] = 1;
+  doc["solutions"].push_back(on_curve_1);
+  nlohmann::json& failed = doc["solutions"][1]["values"];
+  failed["solver"] = {{"termination", "max_iterations"}, {"success", false}, {"message", "MaxIter"},
+                      {"iterations", 500}, {"function_evaluations", 600}, {"jacobian_evaluations", 500},
+                      {"failed_evaluations", 0}, {"wall_seconds", 12.5}, {"objective", 0.02},
+                      {"kkt_error", 3.2e-3}, {"constraint_violation", 1e-9}, {"x", nlohmann::json::array()}};
+  doc["solutions"][1]["status"] = "max_iterations";
+  const ReportTable t = point_diagnostics_table(doc);
+  ASSERT_EQ(t.rows.size(), doc["solutions"].size());
+  ASSERT_EQ(t.failed, (std::vector<bool>{false, true, false}));
+  EXPECT_EQ(t.rows[2][0], "1") << "curve numbers as stored";
+  const std::vector<std::string> row = t.rows[1];
+  EXPECT_EQ(row[4], "500");
+  EXPECT_EQ(row[5], "3.2e-03");
+  EXPECT_EQ(row[7], "12.50");
+  EXPECT_EQ(row[9], "max_iterations");
+  EXPECT_EQ(row[10], "NO");
+  EXPECT_EQ(t.rows[0][10], "yes");
+  const std::string html = to_html(walker_job_report(doc));
+  std::size_t marked = 0;
+  for (std::size_t at = html.find("<tr class=\"failed\">"); at != std::string::npos; at = html.find("<tr class=\"failed\">", at + 1))
+    ++marked;
+  EXPECT_EQ(marked, 2u) << "the diagnostics row and the solved-points row of the failed speed";
+  EXPECT_NE(html.find("3 stored points on 2 curve(s)"), std::string::npos);
+  EXPECT_NE(html.find("1 did not converge"), std::string::npos);
+}
+
+// Issue 54 item 4: the Floquet chart draws the stability limit |Λ| = 1 (eq. 5.90).
+TEST_F(WalkerFigures, FloquetChartDrawsTheStabilityLineAtOne) {
+  LineChart chart = floquet_chart({walker_job_results(document_of(2, *hmt_))});
+  bool negative = false;
+  for (double y : chart.series[0].y) negative = negative || y < 0;
+  ASSERT_EQ(chart.reference_lines.size(), negative ? 2u : 1u) << "a line at -1 only for a negative multiplier";
+  EXPECT_EQ(chart.reference_lines[0].y, 1.0);
+  EXPECT_NE(chart.axes.y_label.find("Λ"), std::string::npos);
+  // On a y axis from 0 to 2 the line runs across the middle of the plot area (Axes: 48 px above
+  // it with a title, 62 below): at row 48 + (600 - 110) / 2 = 293.
+  chart.y_range = Range{0, 2};
+  const fs::path png = out_dir() / "floquet_line.png";
+  render(chart, png.string(), {900, 600});
+  std::map<int, int> in_row;  // pixels of the line's colour (antialiased: within 0.3) per row
+  testing::for_pixels_of(png.string(), kReferenceLineColor, 0.3, 0, 600, [&in_row](int, int y) { ++in_row[y]; });
+  const auto densest = std::max_element(in_row.begin(), in_row.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  ASSERT_NE(densest, in_row.end());
+  EXPECT_NEAR(densest->first, 292.5, 1);
+  EXPECT_GT(densest->second, 300) << "a dashed line across the plot";
+}
+
+// Issue 54 item 4 (seed 001 Fig. 9.5, section 9.1): within one step the joint powers with their
+// positive part shaded, the part f_mech charges: the shaded areas of all joints add up to the
+// stored f_mech (eq. 5.100, 5.102: trapezoid rule in time, zero crossings interpolated), and no
+// shading where a power is negative.
+TEST_F(WalkerFigures, PowerChartShadesExactlyThePositivePartThatFmechCharges) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const GaitPoint& p = *point_near(r, 1.2);
+  const LineChart chart = joint_power_chart(r, p);
+  ASSERT_EQ(chart.series.size(), 6u);
+  ASSERT_EQ(chart.bands.size(), 6u);
+  double shaded = 0;  // sum over joints of the shaded area, in W times t/T
+  for (std::size_t j = 0; j < 6; ++j) {
+    const Band& b = chart.bands[j];
+    const Series& s = chart.series[j];
+    for (std::size_t i = 0; i < b.x.size(); ++i) {
+      EXPECT_EQ(b.low[i], 0.0);
+      EXPECT_GE(b.high[i], 0.0);
+    }
+    for (std::size_t i = 0; i < s.x.size(); ++i) {  // on the samples: max(P, 0)
+      const auto at = std::find(b.x.begin(), b.x.end(), s.x[i]);
+      ASSERT_NE(at, b.x.end());
+      EXPECT_EQ(b.high[static_cast<std::size_t>(at - b.x.begin())], std::max(s.y[i], 0.0));
+    }
+    for (std::size_t i = 1; i < b.x.size(); ++i) shaded += 0.5 * (b.high[i - 1] + b.high[i]) * (b.x[i] - b.x[i - 1]);
+  }
+  const walker::WalkerModel<double> m = r.walker.model();
+  const double f_mech = shaded * p.trajectory->time.back() / (m.total_mass * m.constants.gravity * p.gait.step_length);
+  EXPECT_NEAR(f_mech, p.gait.f_mech, 1e-9 * p.gait.f_mech);
+  const std::vector<Figure> step = within_step_figures(r, p);
+  ASSERT_EQ(step.size(), 4u);
+  for (const Figure& f : step) {
+    SCOPED_TRACE(f.name);
+    const std::string path = write_figure(f, (out_dir() / "within_step").string())[0];
+    EXPECT_GT(testing::inspect_png(path).drawn_pixels, 20000);
+  }
+  // Angles in degrees and torques as stored, one curve per joint over t/T in [0, 1].
+  const LineChart angles = std::get<LineChart>(step[0].drawing), torques = std::get<LineChart>(step[1].drawing);
+  EXPECT_DOUBLE_EQ(angles.series[2].y[5], 180.0 / M_PI * p.trajectory->q[3][5]);
+  EXPECT_EQ(torques.series[4].y, p.trajectory->torque[4]);
+  EXPECT_EQ(torques.series[4].x.back(), 1.0);
+}
+
+// The rolling contact point within the step: on the sole between its heel and toe ends, where the
+// placed foot outline touches the ground (walker_pose.hpp).
+TEST_F(WalkerFigures, ContactPointChartStaysOnTheSole) {
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  const GaitPoint& p = *point_near(r, 1.2);
+  const LineChart chart = contact_point_chart(r, p);
+  ASSERT_EQ(chart.series.size(), 1u);
+  ASSERT_EQ(chart.reference_lines.size(), 3u);
+  const double toe = chart.reference_lines[0].y, heel = chart.reference_lines[1].y;
+  EXPECT_LT(heel, 0.0);
+  EXPECT_GT(toe, 0.0);
+  for (double c : chart.series[0].y) {
+    EXPECT_GT(c, heel);
+    EXPECT_LT(c, toe);
+  }
+  EXPECT_THROW(contact_point_chart(walker_job_results(document_of(1, *point_feet_)), *point_near(walker_job_results(document_of(1, *point_feet_)), 1.0)),
+               std::invalid_argument);
+}
+
+// Issue 54 item 4 (seed 001 Fig. 9.1): every stored solution curve, numbered as stored, over the
+// best-per-speed envelope.
+TEST_F(WalkerFigures, SolutionCurvesChartDrawsEveryStoredCurveOverTheEnvelope) {
+  nlohmann::json doc = document_of(2, *hmt_);
+  const nlohmann::json best = doc["solutions"];
+  for (int curve : {1, 3})
+    for (const nlohmann::json& s : best) {
+      nlohmann::json c = s;
+      c["curve"] = curve;
+      doc["solutions"].push_back(c);
+    }
+  const WalkerJobResults r = walker_job_results(doc);
+  ASSERT_EQ(r.curves.size(), 2u);
+  const LineChart chart = solution_curves_chart(r);
+  ASSERT_EQ(chart.series.size(), 3u);
+  EXPECT_EQ(chart.series[0].label, "curve 0: best per speed (envelope)");
+  EXPECT_GT(chart.series[0].width, chart.series[1].width);
+  EXPECT_EQ(chart.series[1].label, "curve 1");
+  EXPECT_EQ(chart.series[2].label, "curve 3");
+  EXPECT_EQ(chart.series[2].y.size(), 2u);
+  EXPECT_EQ(chart.series[2].y[1], r.points[1].gait.objective);
+  EXPECT_NE(chart.axes.y_label.find("f_{mech}"), std::string::npos);
+}
+
+// Issue 54 item 4: the report as a PDF (cairo): a PDF document whose pages are the text pages and
+// one page per drawn figure (the SVG-only animations left out).
+TEST_F(WalkerFigures, ReportAsPdfHasAPagePerFigureAfterItsText) {
+  const Report report = walker_job_report(document_of(2, *hmt_));
+  std::size_t drawn = 0;
+  for (const ReportSection& s : report.sections)
+    for (const ReportFigure& f : s.figures) drawn += static_cast<bool>(f.draw);
+  const WalkerJobResults r = walker_job_results(document_of(2, *hmt_));
+  EXPECT_EQ(drawn, report_svgs(r) - 2) << "every figure but the two animations";
+  const fs::path pdf = out_dir() / "report.pdf";
+  write_pdf(report, pdf.string());
+  const std::string bytes = text_of(pdf);
+  EXPECT_EQ(bytes.rfind("%PDF-", 0), 0u);
+  std::size_t pages = 0;
+  for (std::size_t at = bytes.find("/Type /Page"); at != std::string::npos; at = bytes.find("/Type /Page", at + 1))
+    pages += bytes.compare(at, 12, "/Type /Pages") != 0;
+  EXPECT_GT(pages, drawn) << "text pages, then one per figure";
+  EXPECT_LT(pages, drawn + 6);
 }
 
 TEST(GiantSwingStroboscope, FramesAtTheRateWithBarHipAndFeetPaths) {
@@ -495,13 +698,16 @@ TEST_F(WalkerFigures, QueryPrintsOneReadableLinePerPoint) {
   for (const std::string& line : table) EXPECT_LT(line.size(), 140u) << line;
   // The line of the 1.0 m/s point shows its step length and cadence = 60 / period.
   const nlohmann::json& g = point_feet_->points[1].values().at("gait");
+  // Issue 54: fixed decimals per column (step length in 0.1 mm, cadence in 0.1 steps per minute).
   char step[32], cadence[32];
-  std::snprintf(step, sizeof step, "%.5g", g["step_length"].get<double>());
-  std::snprintf(cadence, sizeof cadence, "%.5g", 60.0 / g["step_period"].get<double>());
+  std::snprintf(step, sizeof step, "%.4f", g["step_length"].get<double>());
+  std::snprintf(cadence, sizeof cadence, "%.1f", 60.0 / g["step_period"].get<double>());
   EXPECT_NE(table[2].find(step), std::string::npos) << table[2];
   EXPECT_NE(table[2].find(cadence), std::string::npos) << table[2];
   const std::vector<std::string> wide = output("query 1 --wide", "wide.txt");
   EXPECT_NE(wide[0].find("gait.step_length"), std::string::npos) << wide[0];
+  EXPECT_NE(wide[0].find("speed [m/s]"), std::string::npos) << wide[0];
+  EXPECT_EQ(wide[0].find("parameter"), std::string::npos) << wide[0];
   EXPECT_NE(wide[0].find("solved_at"), std::string::npos) << wide[0];
   const std::vector<std::string> csv = output("query 1 --csv", "table.csv");
   EXPECT_NE(csv[0].find("gait.floquet_multiplier"), std::string::npos) << csv[0];

@@ -233,7 +233,7 @@ TEST_F(FootDesignJobs, ASmallDesignStoresEveryPhaseAndTheDesignRecord) {
   const std::string html = plot::to_html(plot::foot_design_report(doc));
   EXPECT_NE(html.find("Designs per density"), std::string::npos);
   EXPECT_NE(html.find("best design"), std::string::npos);
-  EXPECT_NE(html.find("Best: the " + design.answer + " of rho 10"), std::string::npos);
+  EXPECT_NE(html.find("Best: the " + design.answer + " of ρ = 10"), std::string::npos);
   EXPECT_NE(html.find("low-speed design ("), std::string::npos);  // its row in the table of designs
   // CYCLOPT_TEST_FIGURE_DIR keeps the pictures and the report, to look at them.
   const std::string keep = std::getenv("CYCLOPT_TEST_FIGURE_DIR") ? std::getenv("CYCLOPT_TEST_FIGURE_DIR") : "";

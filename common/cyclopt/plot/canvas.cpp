@@ -1,5 +1,7 @@
 #include "cyclopt/plot/canvas.hpp"
 
+#include "cyclopt/plot/rich_text.hpp"
+
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -55,12 +57,19 @@ Canvas::Canvas(const std::string& path, double width, double height)
   cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
 }
 
+Canvas::Canvas(cairo_t* cr, double width, double height)
+    : width_(width), height_(height), png_(false), finished_(true), owned_(false), cr_(cr) {
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+}
+
 Canvas::~Canvas() {
   try {
     finish();
   } catch (...) {
     // A destructor must not throw; callers who care call finish() themselves.
   }
+  if (!owned_) return;
   if (cr_) cairo_destroy(cr_);
   if (surface_) cairo_surface_destroy(surface_);
 }
@@ -128,25 +137,42 @@ void Canvas::rectangle(Point top_left, double w, double h, Color stroke, Color f
   cairo_stroke(cr_);
 }
 
-double Canvas::text_width(std::string_view s, double size, bool bold) {
-  cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr_, size);
+namespace {
+
+// Sub- and superscripts (rich_text.hpp): 70 % of the size, lowered by a quarter or raised by
+// 40 % of the size.
+constexpr double kShiftedSize = 0.7, kSubscriptDrop = 0.25, kSuperscriptRise = 0.4;
+
+double run_width(cairo_t* cr, const TextRun& r, double size, bool bold) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, r.shift == 0 ? size : kShiftedSize * size);
   cairo_text_extents_t ext;
-  const std::string str(s);
-  cairo_text_extents(cr_, str.c_str(), &ext);
+  cairo_text_extents(cr, r.text.c_str(), &ext);
   return ext.x_advance;
+}
+
+}  // namespace
+
+double Canvas::text_width(std::string_view s, double size, bool bold) {
+  double w = 0;
+  for (const TextRun& r : rich_text_runs(s)) w += run_width(cr_, r, size, bold);
+  return w;
 }
 
 void Canvas::text(Point p, std::string_view s, double size, Color c, Align align, double degrees, bool bold) {
   const double w = text_width(s, size, bold);
-  const double shift = align == Align::left ? 0.0 : align == Align::center ? -0.5 * w : -w;
+  double x = align == Align::left ? 0.0 : align == Align::center ? -0.5 * w : -w;
   cairo_save(cr_);
   cairo_translate(cr_, p.x, p.y);
   cairo_rotate(cr_, degrees * M_PI / 180.0);
-  cairo_move_to(cr_, shift, 0);
   set_color(cr_, c);
-  const std::string str(s);
-  cairo_show_text(cr_, str.c_str());
+  for (const TextRun& r : rich_text_runs(s)) {
+    const double advance = run_width(cr_, r, size, bold);  // also selects the run's font and size
+    const double y = r.shift < 0 ? kSubscriptDrop * size : r.shift > 0 ? -kSuperscriptRise * size : 0.0;
+    cairo_move_to(cr_, x, y);
+    cairo_show_text(cr_, r.text.c_str());
+    x += advance;
+  }
   cairo_restore(cr_);
 }
 

@@ -35,6 +35,9 @@ class Canvas {
  public:
   // Throws std::invalid_argument for an unknown extension (allowed: .png .svg .pdf).
   Canvas(const std::string& path, double width, double height);
+  // Draws into `cr`, e.g. a page of a multi-page PDF (pdf_report.hpp), from its current origin;
+  // the caller owns the context and its surface, finish() does nothing.
+  Canvas(cairo_t* cr, double width, double height);
   ~Canvas();
   Canvas(const Canvas&) = delete;
   Canvas& operator=(const Canvas&) = delete;
@@ -49,6 +52,7 @@ class Canvas {
   void circle(Point center, double radius, Color fill);
   void rectangle(Point top_left, double w, double h, Color stroke, Color fill, double width);
   // Text with its baseline at p.y, aligned horizontally at p.x; rotated by `degrees` about p.
+  // `s` may hold sub- and superscripts (rich_text.hpp: "x_{H}^{-}").
   void text(Point p, std::string_view s, double size, Color c, Align align = Align::left, double degrees = 0,
             bool bold = false);
   double text_width(std::string_view s, double size, bool bold = false);
@@ -65,6 +69,7 @@ class Canvas {
   double width_, height_;
   bool png_;
   bool finished_ = false;
+  bool owned_ = true;  // the surface and context are this canvas's
   cairo_surface_t* surface_ = nullptr;
   cairo_t* cr_ = nullptr;
 };

@@ -68,8 +68,8 @@ FootComparisonCurves foot_comparison_curves(const nlohmann::json& doc) {
 
 LineChart foot_comparison_chart(const FootComparisonCurves& c) {
   LineChart chart;
-  chart.axes = {"f_mech of every foot and the best envelope (seed 001 Fig. 9.14/9.19a)", "mean speed v (m/s)",
-                "mechanical cost of transport f_mech (eq. 5.102) (-)", true};
+  chart.axes = {"f_{mech} of every foot and the best envelope (seed 001 Fig. 9.14/9.19a)", "mean speed v (m/s)",
+                "mechanical cost of transport f_{mech} (eq. 5.102) (-)", true};
   int colour = 0;
   for (const ComparedFootCurve& f : c.feet) {
     if (f.speed.empty()) continue;
@@ -130,10 +130,10 @@ Scene foot_outlines_scene(const FootComparisonCurves& c) {
 std::vector<Figure> foot_comparison_figures(const nlohmann::json& document) {
   const FootComparisonCurves c = foot_comparison_curves(document);
   std::vector<Figure> out;
-  out.push_back({"foot_comparison", "f_mech over speed of every compared foot with the best envelope (seed 001 Fig. 9.19a)",
+  out.push_back({"foot_comparison", "f_{mech} over speed of every compared foot with the best envelope (seed 001 Fig. 9.19a)",
                  foot_comparison_chart(c), {}});
   Scene outlines = foot_outlines_scene(c);
-  const RenderOptions size = fitted_options(outlines, 760);
+  const RenderOptions size = fitted_options(outlines, 760, 600, kPageWidth);
   out.push_back({"foot_outlines", "Outlines of the compared feet side by side (seed 001 Fig. 9.8/9.13/9.16)",
                  std::move(outlines), size});
   return out;

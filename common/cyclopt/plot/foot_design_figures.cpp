@@ -16,7 +16,7 @@ namespace {
 
 std::string rho_text(double rho) {
   char b[48];
-  std::snprintf(b, sizeof b, "rho %g kg/m^2", rho);
+  std::snprintf(b, sizeof b, "ρ = %g kg/m^{2}", rho);
   return b;
 }
 
@@ -97,8 +97,8 @@ FootDesignCurves foot_design_curves(const nlohmann::json& doc) {
 
 LineChart foot_design_cost_chart(const FootDesignCurves& c) {
   LineChart chart;
-  chart.axes = {"f_mech of the designed feet, the start foot and point feet (seed 001 Fig. 10.7)", "mean speed v (m/s)",
-                "mechanical cost of transport f_mech (eq. 5.102) (-)", true};
+  chart.axes = {"f_{mech} of the designed feet, the start foot and point feet (seed 001 Fig. 10.7)", "mean speed v (m/s)",
+                "mechanical cost of transport f_{mech} (eq. 5.102) (-)", true};
   if (!c.start_foot.speed.empty())
     chart.series.push_back({c.start_foot.name + " (its own masses)", c.start_foot.speed, c.start_foot.f_mech, false, true,
                             Color{0, 0, 0, 1}});
@@ -159,11 +159,11 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
       skip(d.sweep.name + ": no admissible design (" + d.record.reason.value_or("no reason stored") + ")");
   std::vector<Figure> out;
   Scene outlines = foot_design_outlines_scene(c);
-  const RenderOptions size = fitted_options(outlines, 800);
+  const RenderOptions size = fitted_options(outlines, 800, 600, kPageWidth);
   out.push_back({"foot_design_outlines", "Designed feet per density over the start foot (seed 001 Fig. 10.5/10.6)",
                  std::move(outlines), size});
   try {
-    out.push_back({"foot_design_cost", "f_mech over speed of each density's design (solid) and low-speed design "
+    out.push_back({"foot_design_cost", "f_{mech} over speed of each density's design (solid) and low-speed design "
                                        "(dashed), the start foot and point feet (seed 001 Fig. 10.7)",
                    foot_design_cost_chart(c), {}});
   } catch (const std::invalid_argument& e) {
@@ -188,7 +188,7 @@ std::vector<Figure> foot_design_figures(const FootDesignCurves& c, std::vector<s
     return out;
   }
   Scene strobe = gait_stroboscope(r, *p);
-  const RenderOptions strobe_size = fitted_options(strobe, 1000);
+  const RenderOptions strobe_size = fitted_options(strobe, 1000, 600, kPageWidth);
   char caption[160];
   std::snprintf(caption, sizeof caption, "Gait of the best design (%s) at %.2f m/s (seed 001 Fig. 10.4)", r.label.c_str(),
                 p->speed);

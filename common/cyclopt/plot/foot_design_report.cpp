@@ -2,6 +2,8 @@
 
 #include "cyclopt/foot/foot_parameters.hpp"
 #include "cyclopt/plot/foot_design_figures.hpp"
+#include "cyclopt/plot/job_provenance.hpp"
+#include "cyclopt/plot/point_diagnostics.hpp"
 #include "cyclopt/plot/sensitivity_figures.hpp"
 
 #include <cmath>
@@ -18,7 +20,7 @@ std::string joined(const std::vector<std::string>& items) {
 
 ReportTable outcome_table(const FootDesignCurves& c) {
   ReportTable t;
-  t.header = {"rho (kg/m^2)", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling / under-resolved",
+  t.header = {"ρ (kg/m^{2})", "outcome", "KKT starts", "optima admissible / stilt / wheel / no rolling / under-resolved",
               "f at design speed", "answer", "speeds reached", "mean f_mech", "saving vs start foot",
               "saving vs point feet", "wall (s)"};
   for (const DesignedDensity& d : c.densities) {
@@ -44,10 +46,10 @@ ReportTable outcome_table(const FootDesignCurves& c) {
 // parameter of the start foot's model), what follows it, and its sweep.
 ReportTable design_table(const FootDesignCurves& c) {
   ReportTable t;
-  t.header = {"rho (kg/m^2)", "foot (optimal at)"};
+  t.header = {"ρ (kg/m^{2})", "foot (optimal at)"};
   const auto layout = foot::parameter_layout(c.start.model);
   for (const foot::ParameterInfo& p : layout) t.header.push_back(std::string(p.name) + " (" + std::string(p.unit) + ")");
-  for (const char* h : {"m_F (kg)", "r_F (mm)", "J_F (kg m^2)", "theta_F0 (rad)", "active bounds (10.1)", "speeds reached",
+  for (const char* h : {"m_{F} (kg)", "r_{F} (mm)", "J_{F} (kg m^{2})", "θ_{F,0} (rad)", "active bounds (10.1)", "speeds reached",
                         "mean f_mech", "saving vs start foot", "saving vs point feet"})
     t.header.push_back(h);
   for (const DesignedDensity& d : c.densities) {
@@ -88,10 +90,6 @@ Report foot_design_report(const nlohmann::json& doc) {
                     report_number(doc.value("run_seconds", nlohmann::json()).is_number() ? doc["run_seconds"].get<double>() : std::nan(""),
                            "%.1f") +
                     " s of computation";
-  ReportSection spec;
-  spec.heading = "Job specification (resolved)";
-  spec.code = c.spec.dump(2);
-  if (!doc.value("error", std::string()).empty()) spec.text = "outcome: " + doc["error"].get<std::string>();
   ReportSection designs;
   designs.heading = "Designs per density";
   designs.text = "Per density: the design multistart at the design speed (foot and gait free, mass properties following "
@@ -103,8 +101,8 @@ Report foot_design_report(const nlohmann::json& doc) {
                  "mean f_mech.";
   if (c.best >= 0) {
     const DesignedDensity& b = c.densities[static_cast<std::size_t>(c.best)];
-    designs.text += " Best: the " + b.record.answer + " of rho " + report_number(b.record.density, "%g") +
-                    " kg/m^2, saving " + report_number(100 * b.answer_saving_vs_start(), "%.1f") +
+    designs.text += " Best: the " + b.record.answer + " of ρ = " + report_number(b.record.density, "%g") +
+                    " kg/m^{2}, saving " + report_number(100 * b.answer_saving_vs_start(), "%.1f") +
                     " % against the start foot and " + report_number(100 * b.answer_saving_vs_point(), "%.1f") +
                     " % against point feet.";
   } else {
@@ -115,13 +113,13 @@ Report foot_design_report(const nlohmann::json& doc) {
   ReportSection figures;
   figures.heading = "Figures";
   std::vector<std::string> not_drawn;
-  for (const Figure& f : foot_design_figures(c, &not_drawn)) figures.figures.push_back({f.caption, svg_of(f)});
+  for (const Figure& f : foot_design_figures(c, &not_drawn)) figures.figures.push_back(report_figure(f));
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
-  report.sections = {spec, designs};
+  report.sections = {provenance_section(doc), designs, point_diagnostics_section(doc)};
   for (const DesignedDensity& d : c.densities) {
     if (!d.record.sensitivities) continue;
     ReportSection k;
-    k.heading = "KKT sensitivities of the design at rho " + report_number(d.record.density, "%g") + " kg/m^2";
+    k.heading = "KKT sensitivities of the design at ρ = " + report_number(d.record.density, "%g") + " kg/m^{2}";
     k.text = kkt_sensitivity_text(*d.record.sensitivities) +
              " The foot parameters are free in the design, so only the fixed parameters appear.";
     if (!d.record.sensitivities->unavailable) k.tables.push_back(kkt_sensitivity_table(*d.record.sensitivities));

@@ -46,7 +46,7 @@ Scene foot_shape_scene(const foot::FootSpec& spec) {
   if (spec.density) {
     const auto mp = foot::mass_properties(profile_of(spec), *spec.density);
     char label[96];
-    std::snprintf(label, sizeof label, "centre of mass (m = %.3f kg at rho = %.1f kg/m^2)", mp.mass, *spec.density);
+    std::snprintf(label, sizeof label, "centre of mass (m = %.3f kg at ρ = %.1f kg/m^{2})", mp.mass, *spec.density);
     scene.markers.push_back({mp.com_x, mp.com_z, palette(3), 5, label});
   }
   scene.ground_z = sole;

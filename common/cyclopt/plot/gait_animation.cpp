@@ -12,11 +12,11 @@
 namespace cyclopt::plot {
 namespace {
 
-constexpr double kHeight = 420;  // px of the drawing between its lowest and highest point
-constexpr double kMargin = 16;   // px around it
-constexpr double kHeader = 56;   // px above it: the gait's speed and step, and the clock
-constexpr double kFooter = 48;   // px below the ground: the time bar and its marks
-constexpr double kMinWidth = 520;  // px, so that the header fits
+constexpr double kHeight = 230;  // px of the drawing between its lowest and highest point
+constexpr double kMargin = 12;   // px around it
+constexpr double kHeader = 30;   // px above it: the clock
+constexpr double kFooter = 44;   // px below the ground: the time bar and its marks
+constexpr double kMinWidth = 300;  // px, so that the time bar's marks fit
 constexpr const char* kFont = "font-family=\"DejaVu Sans,Helvetica,Arial,sans-serif\" fill=\"#1a1a1a\"";
 
 std::string format(const char* f, double v) {
@@ -28,7 +28,7 @@ std::string format(const char* f, double v) {
 // The clock "t = ... s": one <text> per interval between two poses, shown during its interval
 // only (SMIL animates attributes, not text content); the first is also the static picture's.
 std::string clock_svg(int intervals, double dt, const std::string& duration, double x, double y) {
-  std::string svg = "<g id=\"gait-clock\" " + std::string(kFont) + " font-size=\"17\" font-weight=\"bold\">\n";
+  std::string svg = "<g id=\"gait-clock\" " + std::string(kFont) + " font-size=\"14\" font-weight=\"bold\">\n";
   for (int k = 0; k < intervals; ++k) {
     const std::string from = format("%.6f", static_cast<double>(k) / intervals),
                       to = format("%.6f", static_cast<double>(k + 1) / intervals);
@@ -54,10 +54,10 @@ std::string time_bar_svg(double period, const std::string& duration, double x0, 
   for (const double x : {x0, mid, x1})
     svg += format("<line x1=\"%.1f\"", x) + format(" y1=\"%.1f\"", y - 3) + format(" x2=\"%.1f\"", x) +
            format(" y2=\"%.1f\"", y + 11) + " stroke=\"#404040\" stroke-width=\"1.5\"/>\n";
-  const std::string text = "<text " + std::string(kFont) + " font-size=\"13\"" + format(" y=\"%.1f\"", y + 26);
+  const std::string text = "<text " + std::string(kFont) + " font-size=\"12\"" + format(" y=\"%.1f\"", y + 24);
   svg += text + format(" x=\"%.1f\"", x0) + ">0 s</text>\n";
-  svg += text + format(" x=\"%.1f\"", mid) + " text-anchor=\"middle\">T = " + format("%.3f", period) + " s, step 2</text>\n";
-  svg += text + format(" x=\"%.1f\"", x1) + " text-anchor=\"end\">2T = " + format("%.3f", 2 * period) + " s</text>\n";
+  svg += text + format(" x=\"%.1f\"", mid) + " text-anchor=\"middle\">T = " + format("%.3f", period) + " s</text>\n";
+  svg += text + format(" x=\"%.1f\"", x1) + " text-anchor=\"end\">2T</text>\n";
   return svg + "</g>\n";
 }
 
@@ -123,10 +123,6 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
                 "<line x1=\"0\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"#59402a\" stroke-width=\"2\"/>\n",
                 width, height, width, height, ground, width, ground);
   std::string svg = std::string(head);
-  const double speed = std::isfinite(point.gait.mean_speed) ? point.gait.mean_speed : step / period;
-  svg += "<text x=\"" + format("%.1f", kMargin) + "\" y=\"22\" " + kFont + " font-size=\"15\">v = " +
-         format("%.2f", speed) + " m/s, step length " + format("%.3f", step) + " m, step period T = " +
-         format("%.3f", period) + " s</text>\n";
   char duration[32];
   std::snprintf(duration, sizeof duration, "%.4fs", 2 * period);  // real time: two steps
   auto animated = [&](const std::string& element, const std::string& style, std::vector<Xz> Parts::*part) {
@@ -146,7 +142,7 @@ std::string gait_animation_svg(const WalkerJobResults& job, const GaitPoint& poi
   animated("polygon", "fill=\"#d65f00\" fill-opacity=\"0.15\" stroke=\"#d65f00\" stroke-width=\"1.5\"", &Parts::foot_b);
   animated("polyline", line + " stroke=\"#1f77b5\" stroke-width=\"3\"", &Parts::leg_a);
   animated("polygon", "fill=\"#1f77b5\" fill-opacity=\"0.15\" stroke=\"#1f77b5\" stroke-width=\"1.5\"", &Parts::foot_a);
-  svg += clock_svg(2 * frames_per_step, dt, duration, kMargin, 47);
+  svg += clock_svg(2 * frames_per_step, dt, duration, kMargin, 22);
   svg += time_bar_svg(period, duration, kMargin, width - kMargin, ground + 10);
   return svg + "</svg>\n";
 }

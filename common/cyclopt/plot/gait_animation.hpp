@@ -3,10 +3,10 @@
 // over two steps in real time, looping. Pure SVG: every body part is one <polyline> or <polygon>
 // whose `points` an SMIL <animate> steps through the poses (no JavaScript), so it plays inline in
 // the HTML report. Step k is the stored step shifted by k step lengths with the legs' roles swapped.
-// Drawn 420 px high (the report's figures scale it down to the page width at most); above it the
-// gait's speed, step length and step period T and a clock "t = ... s" (id "gait-clock") counting
-// the time since the loop began, below the ground a bar (id "gait-time-bar") filling over the
-// loop, marked at 0, T and 2 T.
+// Drawn 230 px high, small enough for the report to set several side by side in a grid (the gait's
+// speed, step length and period go in the grid's caption, once); above the walker a clock
+// "t = ... s" (id "gait-clock") counting the time since the loop began, below the ground a bar (id
+// "gait-time-bar") filling over the loop, marked at 0, T and 2 T.
 
 #include "cyclopt/plot/walker_job_results.hpp"
 

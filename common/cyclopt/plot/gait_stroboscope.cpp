@@ -4,9 +4,7 @@
 #include "cyclopt/plot/walker_pose.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -21,21 +19,8 @@ std::vector<Xz> shifted(std::vector<Xz> pts, double dx) {
   return pts;
 }
 
-// Gap between the rightmost point of one drawn pose and the leftmost of the next (m).
-constexpr double kPoseGap = 0.04;
-
-// Leftmost and rightmost x of everything drawn for one pose.
-std::array<double, 2> x_extent(const WalkerPose& p) {
-  std::array<double, 2> e{p.contact[0], p.contact[0]};
-  auto add = [&e](const Xz& q) { e = {std::min(e[0], q[0]), std::max(e[1], q[0])}; };
-  for (const Xz& q : {p.torso_tip, p.hip, p.knee1, p.knee2, p.ankle1, p.ankle2}) add(q);
-  for (const std::vector<Xz>* foot : {&p.foot1, &p.foot2})
-    for (const Xz& q : *foot) add(q);
-  return e;
-}
-
 std::string leg_label(const Color& c) {
-  return c.b == kLegA.b ? "leg A (stance in steps 1, 3, ...)" : "leg B (stance in steps 2, 4, ...)";
+  return c.b == kLegA.b ? "leg A (stance in step 1)" : "leg B (swing in step 1)";
 }
 
 std::string fixed(double v, int digits) {
@@ -64,42 +49,24 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
 
   Scene scene;
   const double dt = period / o.frames_per_step;
-  scene.axes = {std::to_string(o.steps) + " steps at v = " + fixed(point.gait.mean_speed, 2) +
-                    " m/s, every " + fixed(dt * 1000, 0) + " ms (seed 001 Fig. 9.2)",
-                "x (m)", "z (m)", false};
+  scene.axes = {"v = " + fixed(point.gait.mean_speed, 2) + " m/s" +
+                    (o.legend ? ": " + std::to_string(o.steps * o.frames_per_step + 1) + " poses " + fixed(dt * 1000, 0) +
+                                    " ms apart"
+                              : std::string()),
+                o.legend ? "x (m), stance ankle at impact at 0" : "x (m)", "z (m)", false};
   scene.ground_z = 0.0;
   scene.pad = 0.04;
   const double peak_clearance = *std::max_element(swing_z.begin(), swing_z.end());
-  // Fig. 9.2 draws consecutive poses side by side: frame f of step k stands at its place in the
-  // walk (k step lengths on) plus spread[k][f] >= the previous frame's, just far enough right that
-  // it clears the previous pose. Frame 0 of step k > 0 is the last frame of step k - 1.
-  std::vector<std::vector<WalkerPose>> poses(static_cast<std::size_t>(o.steps));
-  std::vector<std::vector<double>> spread(static_cast<std::size_t>(o.steps));
-  double previous_right = -std::numeric_limits<double>::infinity(), extra = 0;
-  for (std::size_t k = 0; k < poses.size(); ++k)
-    for (int f = 0; f <= o.frames_per_step; ++f) {
-      poses[k].push_back(walker_pose(model, q_at(tr, f * dt), outline));
-      if (k > 0 && f == 0) {
-        spread[k].push_back(spread[k - 1].back());
-        continue;
-      }
-      const std::array<double, 2> e = x_extent(poses[k].back());
-      const double at = static_cast<double>(k) * step;
-      extra = std::max(extra, previous_right + kPoseGap - (at + e[0]));
-      spread[k].push_back(extra);
-      previous_right = at + extra + e[1];
-    }
   for (int k = 0; k < o.steps; ++k) {
-    const std::size_t ks = static_cast<std::size_t>(k);
+    const double dx = k * step;  // step k: the same motion one step length on, the legs swapped
     // Leg "A" is the stance leg of even steps; the legs swap roles at every impact.
     const Color stance = k % 2 == 0 ? kLegA : kLegB, swing = k % 2 == 0 ? kLegB : kLegA;
     for (int f = k == 0 ? 0 : 1; f <= o.frames_per_step; ++f) {
-      const WalkerPose& p = poses[ks][static_cast<std::size_t>(f)];
-      const double dx = k * step + spread[ks][static_cast<std::size_t>(f)];
-      const double fade = 0.35 + 0.65 * (k * o.frames_per_step + f) / double(o.steps * o.frames_per_step);
+      const WalkerPose p = walker_pose(model, q_at(tr, f * dt), outline);
+      const double fade = 0.3 + 0.7 * (k * o.frames_per_step + f) / double(o.steps * o.frames_per_step);
       auto faded = [fade](Color c) { return Color{c.r, c.g, c.b, fade}; };
       // Legends on the last, fully opaque frame (the legend takes the first labelled shape's colour).
-      const bool last = k + 1 == o.steps && f == o.frames_per_step;
+      const bool last = o.legend && k + 1 == o.steps && f == o.frames_per_step;
       auto label = [last](std::string text) { return last ? text : std::string(); };
       scene.shapes.push_back({shifted({p.hip, p.torso_tip}, dx), faded(kTorso), 3.0, false, false, std::nullopt, label("torso")});
       scene.shapes.push_back({shifted({p.hip, p.knee1, p.ankle1}, dx), faded(stance), 2.4, false, false, std::nullopt,
@@ -110,25 +77,16 @@ Scene gait_stroboscope(const WalkerJobResults& job, const GaitPoint& point, cons
         scene.shapes.push_back({shifted(p.foot1, dx), faded(stance), 1.4, false, true, Color{stance.r, stance.g, stance.b, 0.12}, ""});
         scene.shapes.push_back({shifted(p.foot2, dx), faded(swing), 1.4, false, true, Color{swing.r, swing.g, swing.b, 0.12}, ""});
       }
-      scene.markers.push_back({p.contact[0] + dx, p.contact[1], kContact, 4.5, "rolling contact point C1 (every frame)"});
+      scene.markers.push_back({p.contact[0] + dx, p.contact[1], kContact, 4.0, o.legend ? "contact point C_{1}" : ""});
       scene.markers.push_back({p.hip[0] + dx, p.hip[1], kTorso, 3.0, ""});
     }
-    // The swing foot's path, spread with the frames: between two frames its shift is interpolated
-    // in time, so it passes through every drawn swing foot.
+    // The swing foot's lowest point over the step, where it is.
     Shape clearance{{}, kClearance, 1.8, true, false, std::nullopt,
-                    "swing-foot lowest point C2 (peak clearance " + fixed(peak_clearance * 100, 1) + " cm)"};
-    for (std::size_t i = 0; i < swing_x.size(); ++i) {
-      const double s_f = std::clamp(tr.time[i] / dt, 0.0, double(o.frames_per_step));
-      const std::size_t f0 = std::min(static_cast<std::size_t>(s_f), static_cast<std::size_t>(o.frames_per_step - 1));
-      const double w = s_f - static_cast<double>(f0);
-      const double extra_i = (1 - w) * spread[ks][f0] + w * spread[ks][f0 + 1];
-      clearance.points.push_back({swing_x[i] + k * step + extra_i, swing_z[i]});
-    }
+                    o.legend ? "swing foot C_{2} (peak " + fixed(peak_clearance * 100, 1) + " cm up)" : ""};
+    for (std::size_t i = 0; i < swing_x.size(); ++i) clearance.points.push_back({swing_x[i] + dx, swing_z[i]});
     scene.shapes.push_back(std::move(clearance));
   }
-  scene.axes.x_label = "x (m); each pose moved right by its spread (the last by " +
-                       fixed(spread.back().back(), 2) + " m) so the poses stand side by side";
-  // The legend above the figures, which now fill the width: one 18 px row per entry, box and margins.
+  // The legend above the figures: one 18 px row per entry, box and margins.
   std::set<std::string> entries;
   for (const Shape& sh : scene.shapes)
     if (!sh.legend.empty()) entries.insert(sh.legend);

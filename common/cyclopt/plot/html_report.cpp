@@ -1,5 +1,6 @@
 #include "cyclopt/plot/html_report.hpp"
 
+#include "cyclopt/plot/rich_text.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 
 #include <atomic>
@@ -34,7 +35,14 @@ constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,Helvetica,Arial,s
 h1{font-size:1.6em;margin-bottom:0}.sub{color:#666;margin-top:.2em}h2{font-size:1.25em;border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}
 .wide{overflow-x:auto}table{border-collapse:collapse;margin:.8em 0;font-size:.9em}th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}
 th{background:#f2f2f2}td:first-child,th:first-child{text-align:left}pre{background:#f7f7f7;padding:.8em;overflow-x:auto;font-size:.85em}
-figure{margin:1em 0}figcaption{color:#444;font-size:.9em}svg{max-width:100%;height:auto})";
+figure{margin:1em 0}figcaption{color:#444;font-size:.9em}svg{max-width:100%;height:auto}
+tr.failed td{background:#fde2e2;color:#8b0000;font-weight:bold}
+.grid{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}.grid figure{margin:0;max-width:316px}
+.box{border:2px solid #5b7fa6;background:#f4f8fc;padding:.2em 1em 1em;margin-top:1.2em}.box h2{border:none;margin-top:.6em}
+details summary{cursor:pointer;color:#333;margin-top:.6em}.box table{font-size:.85em}.box td{text-align:left}
+.listings{display:flex;gap:1em;align-items:flex-start}.listings details{flex:1;min-width:0}.listings pre{max-height:30em}
+.scroll{max-height:36em;overflow:auto;border:1px solid #ddd}.scroll table{margin:0}.scroll td{white-space:nowrap}
+.scroll thead th{position:sticky;top:0})";
 
 }  // namespace
 
@@ -56,6 +64,15 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
+std::string rich_text_html(const std::string& markup) {
+  std::string out;
+  for (const TextRun& r : rich_text_runs(markup)) {
+    const std::string text = html_escape(r.text);
+    out += r.shift < 0 ? "<sub>" + text + "</sub>" : r.shift > 0 ? "<sup>" + text + "</sup>" : text;
+  }
+  return out;
+}
+
 std::string report_number(double v, const char* format) {
   if (!std::isfinite(v)) return "-";
   char b[48];
@@ -73,25 +90,32 @@ std::string to_html(const Report& report) {
     << "</title><style>" << kStyle << "</style></head><body>\n";
   h << "<h1>" << html_escape(report.title) << "</h1>\n";
   int figure_count = 0;  // the page-wide figure number prefixes each inline SVG's ids (svg_ids.hpp)
-  if (!report.subtitle.empty()) h << "<p class=\"sub\">" << html_escape(report.subtitle) << "</p>\n";
+  if (!report.subtitle.empty()) h << "<p class=\"sub\">" << rich_text_html(report.subtitle) << "</p>\n";
   for (const ReportSection& s : report.sections) {
-    h << "<h2>" << html_escape(s.heading) << "</h2>\n";
-    if (!s.text.empty()) h << "<p>" << html_escape(s.text) << "</p>\n";
-    if (!s.code.empty()) h << "<pre>" << html_escape(s.code) << "</pre>\n";
+    h << (s.boxed ? "<section class=\"box\">" : "<section>") << "<h2>" << rich_text_html(s.heading) << "</h2>\n";
+    if (!s.text.empty()) h << "<p>" << rich_text_html(s.text) << "</p>\n";
     for (const ReportTable& t : s.tables) {
-      h << "<div class=\"wide\"><table><thead><tr>";
-      for (const std::string& c : t.header) h << "<th>" << html_escape(c) << "</th>";
+      h << (t.scroll ? "<div class=\"scroll\"><table><thead><tr>" : "<div class=\"wide\"><table><thead><tr>");
+      for (const std::string& c : t.header) h << "<th>" << rich_text_html(c) << "</th>";
       h << "</tr></thead><tbody>\n";
-      for (const auto& row : t.rows) {
-        h << "<tr>";
-        for (const std::string& c : row) h << "<td>" << html_escape(c) << "</td>";
+      for (std::size_t r = 0; r < t.rows.size(); ++r) {
+        h << (r < t.failed.size() && t.failed[r] ? "<tr class=\"failed\">" : "<tr>");
+        for (const std::string& c : t.rows[r]) h << "<td>" << rich_text_html(c) << "</td>";
         h << "</tr>\n";
       }
       h << "</tbody></table></div>\n";
     }
+    if (!s.listings.empty()) h << "<div class=\"listings\">\n";
+    for (const ReportListing& l : s.listings)
+      h << "<details open><summary>" << rich_text_html(l.caption) << "</summary><pre>" << html_escape(l.text)
+        << "</pre></details>\n";
+    if (!s.listings.empty()) h << "</div>\n";
+    if (s.figure_grid) h << "<div class=\"grid\">\n";
     for (const ReportFigure& f : s.figures)
       h << "<figure>" << svg_with_id_prefix(f.svg, "fig" + std::to_string(++figure_count) + "-") << "<figcaption>"
-        << html_escape(f.caption) << "</figcaption></figure>\n";
+        << rich_text_html(f.caption) << "</figcaption></figure>\n";
+    if (s.figure_grid) h << "</div>\n";
+    h << "</section>\n";
   }
   h << "</body></html>\n";
   return h.str();

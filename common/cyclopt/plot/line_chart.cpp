@@ -43,10 +43,8 @@ void draw_band(const Axes& axes, Canvas& canvas, const Band& b) {
   flush();
 }
 
-}  // namespace
-
-void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
-  std::vector<double> xs, ys;
+// The finite data of the chart; throws for mismatched or empty series.
+void data_of(const LineChart& chart, std::vector<double>& xs, std::vector<double>& ys) {
   for (const Series& s : chart.series) {
     if (s.x.size() != s.y.size())
       throw std::invalid_argument("series '" + s.label + "': x has " + std::to_string(s.x.size()) + " values, y has " +
@@ -70,7 +68,22 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
         ys.push_back(b.high[i]);
       }
   }
+  for (const ReferenceLine& r : chart.reference_lines) ys.push_back(r.y);
+}
+
+}  // namespace
+
+void render(const LineChart& chart, const std::string& path, const RenderOptions& options) {
+  std::vector<double> xs, ys;
+  data_of(chart, xs, ys);  // throws before a file is made
   Canvas canvas(path, options.width, options.height);
+  draw(chart, canvas);
+  canvas.finish();
+}
+
+void draw(const LineChart& chart, Canvas& canvas) {
+  std::vector<double> xs, ys;
+  data_of(chart, xs, ys);
   canvas.fill_background({1, 1, 1, 1});
   Axes axes(canvas, chart.x_range.value_or(data_range(xs, 0.02)), chart.y_range.value_or(value_range(ys)),
             chart.axes);
@@ -79,12 +92,18 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   std::vector<Point> occupied;
   std::vector<LegendEntry> legend;
   for (const Band& b : chart.bands) draw_band(axes, canvas, b);
+  for (const ReferenceLine& r : chart.reference_lines) {
+    const Point a = axes.to_pixel(axes.x_range().lo, r.y), b = axes.to_pixel(axes.x_range().hi, r.y);
+    canvas.line(a, b, kReferenceLineColor, 1.6, true);
+    canvas.text({b.x - 6, b.y - 6}, r.label, 13, kReferenceLineColor, Align::right);
+    occupied.push_back({b.x - 60, b.y - 10});
+  }
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
     const Series& s = chart.series[i];
     const Color c = s.color.value_or(palette(static_cast<int>(i)));
     std::vector<Point> run;
     auto flush = [&]() {
-      canvas.polyline(run, c, 2.2, s.dashed);
+      canvas.polyline(run, c, s.width, s.dashed);
       run.clear();
     };
     for (std::size_t j = 0; j < s.x.size(); ++j) {
@@ -102,7 +121,6 @@ void render(const LineChart& chart, const std::string& path, const RenderOptions
   axes.reset_clip();
   axes.draw_frame();
   draw_legend(canvas, axes, legend, occupied);
-  canvas.finish();
 }
 
 }  // namespace cyclopt::plot

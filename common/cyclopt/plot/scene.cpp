@@ -74,8 +74,16 @@ void render(const Scene& scene, const std::string& path, const RenderOptions& op
   content(scene, xs, zs);
   if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
   Canvas canvas(path, options.width, options.height);
+  draw(scene, canvas);
+  canvas.finish();
+}
+
+void draw(const Scene& scene, Canvas& canvas) {
+  std::vector<double> xs, zs;
+  content(scene, xs, zs);
+  if (xs.empty()) throw std::invalid_argument("scene '" + scene.axes.title + "' has nothing to draw");
   canvas.fill_background({1, 1, 1, 1});
-  const Layout l = layout(scene, xs, zs, options.width, options.height);
+  const Layout l = layout(scene, xs, zs, canvas.width(), canvas.height());
   Axes axes(canvas, l.x, l.z, scene.axes, /*equal_scale=*/true);
   axes.draw_grid();
   axes.clip_to_plot_area();
@@ -106,7 +114,6 @@ void render(const Scene& scene, const std::string& path, const RenderOptions& op
   axes.reset_clip();
   axes.draw_frame();
   draw_legend(canvas, axes, legend_entries(scene), occupied);
-  canvas.finish();
 }
 
 }  // namespace cyclopt::plot

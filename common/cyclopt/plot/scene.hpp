@@ -47,6 +47,10 @@ struct Scene {
   double legend_headroom = 0;      // pixels kept empty above the content for the legend
 };
 
+// The width (px) of the HTML report's column: a figure at most this wide is shown at its own size,
+// so its letters are as large as every other figure's.
+inline constexpr double kPageWidth = 940;
+
 // Options whose size gives the scene's content (with its pad and legend room) the plot area's
 // aspect ratio, so equal scales waste no space: `height` pixels high, or, where that would be wider
 // than max_width, max_width wide and as high as the content then needs; at least min_width wide.
@@ -54,5 +58,7 @@ RenderOptions fitted_options(const Scene& scene, double height, double min_width
 
 // Writes the scene to `path` (.png, .svg or .pdf); throws std::invalid_argument for an empty scene.
 void render(const Scene& scene, const std::string& path, const RenderOptions& options = {});
+// The same drawing on a canvas of the caller's (a PDF page).
+void draw(const Scene& scene, Canvas& canvas);
 
 }  // namespace cyclopt::plot

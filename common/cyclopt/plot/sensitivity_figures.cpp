@@ -42,7 +42,7 @@ Figure sensitivity_figure(const std::vector<SensitivityParameter>& parameters) {
   double range = 0.0;
   for (const SensitivityParameter& p : parameters) range = std::max(range, std::isfinite(p.summary.relative_range) ? p.summary.relative_range : 0.0);
   chart.axes = {"Change of the optimal f_mech per parameter: continuation (solid) and KKT tangent (dashed)",
-                "relative change of the parameter (%)", "Delta f_mech (-)", true};
+                "relative change of the parameter (%)", "Δf_{mech} (-)", true};
   int index = 0;
   for (const SensitivityParameter& p : parameters) {
     if (p.steps.empty()) continue;
@@ -58,7 +58,7 @@ Figure sensitivity_figure(const std::vector<SensitivityParameter>& parameters) {
                               {p.summary.predicted_decrease, p.summary.predicted_increase}, false, true, c});
   }
   if (chart.series.empty()) throw std::invalid_argument("sensitivity: no parameter has a continuation point to draw");
-  return {"sensitivity", "Delta f_mech over +-" + report_number(100.0 * range, "%g") +
+  return {"sensitivity", "Δf_{mech} over ±" + report_number(100.0 * range, "%g") +
                              " % of each parameter (seed 001 Fig. 10.1): continuation points, KKT tangent dashed",
           chart, RenderOptions{900, 600}};
 }
@@ -68,8 +68,8 @@ ReportTable sensitivity_comparison_table(const std::vector<SensitivityParameter>
   double range = 0.0;
   for (const SensitivityParameter& p : parameters) range = std::max(range, std::isfinite(p.summary.relative_range) ? p.summary.relative_range : 0.0);
   const std::string minus = report_number(-100.0 * range, "%g") + " %", plus = report_number(100.0 * range, "%+g") + " %";
-  t.header = {"parameter", "value", "KKT df/dp", "relative p/f df/dp", "Delta f predicted " + minus, "Delta f predicted " + plus,
-              "Delta f continuation " + minus, "Delta f continuation " + plus, "verdict"};
+  t.header = {"parameter", "value", "KKT df/dp", "relative p/f df/dp", "Δf predicted " + minus, "Δf predicted " + plus,
+              "Δf continuation " + minus, "Δf continuation " + plus, "verdict"};
   for (const SensitivityParameter& p : parameters) {
     const records::SensitivitySummaryRecord& s = p.summary;
     // The continuation's Delta f at the range, or at the furthest value it reached (marked).

@@ -70,13 +70,6 @@ LineChart per_job_chart(const std::vector<WalkerJobResults>& jobs, const AxesSty
   return chart;
 }
 
-// Joint names of q_b (eq. 5.3) for 4 (point feet) or 6 joints.
-const char* joint_name(int j) {
-  static const char* names[] = {"H1 stance hip", "H2 swing hip", "K1 stance knee", "K2 swing knee",
-                                "A1 stance ankle", "A2 swing ankle"};
-  return names[j];
-}
-
 double max_abs_torque(const GaitPoint& p, int joint) {
   const std::vector<std::vector<double>>& rows = p.trajectory->torque;
   if (joint >= static_cast<int>(rows.size())) return std::nan("");
@@ -90,7 +83,7 @@ double max_abs_torque(const GaitPoint& p, int joint) {
 LineChart cost_of_transport_chart(const std::vector<WalkerJobResults>& jobs) {
   LineChart chart = per_job_chart(jobs,
                                   {"Cost of transport of the optimal gaits (seed 001 Fig. 9.19a)", "mean speed v (m/s)",
-                                   "mechanical cost of transport f_mech (eq. 5.102) (-)", true},
+                                   "mechanical cost of transport f_{mech} (eq. 5.102) (-)", true},
                                   [](const GaitPoint& p) { return p.gait.f_mech; },
                                   // several seeds: up to the worst seed's own best, f * (1 + spread)
                                   [](const GaitPoint& p) -> std::optional<double> {
@@ -137,15 +130,47 @@ LineChart max_torque_chart(const std::vector<WalkerJobResults>& jobs) {
 LineChart step_length_chart(const std::vector<WalkerJobResults>& jobs) {
   return per_job_chart(jobs,
                        {"Step length of the optimal gaits (seed 001 Fig. 9.6a)", "mean speed v (m/s)",
-                        "step length x_H- - x_H+ (m)", true},
+                        "step length x_{H}^{−} − x_{H}^{+} (m)", true},
                        [](const GaitPoint& p) { return p.gait.step_length; });
 }
 
 LineChart floquet_chart(const std::vector<WalkerJobResults>& jobs) {
-  return per_job_chart(jobs,
-                       {"Floquet multiplier of the optimal gaits (seed 001 Fig. 9.6b; stable for |Lambda| < 1)",
-                        "mean speed v (m/s)", "Floquet multiplier Lambda (eq. 5.89) (-)", true},
-                       [](const GaitPoint& p) { return p.gait.floquet_multiplier; });
+  LineChart chart = per_job_chart(jobs,
+                                  {"Floquet multiplier of the optimal gaits (seed 001 Fig. 9.6b; stable for |Λ| < 1)",
+                                   "mean speed v (m/s)", "Floquet multiplier Λ (eq. 5.89) (-)", true},
+                                  [](const GaitPoint& p) { return p.gait.floquet_multiplier; });
+  chart.reference_lines.push_back({1.0, "|Λ| = 1: stability limit"});
+  for (const Series& s : chart.series)
+    if (std::any_of(s.y.begin(), s.y.end(), [](double y) { return y < 0; })) {
+      chart.reference_lines.push_back({-1.0, "Λ = −1: stability limit"});
+      break;
+    }
+  return chart;
+}
+
+LineChart solution_curves_chart(const WalkerJobResults& job) {
+  const std::string objective = job.spec.value("objective", std::string("f_mech"));
+  const std::string name = objective == "f_usq" ? "f_{usq} (eq. 5.101)" : "f_{mech} (eq. 5.102)";
+  LineChart chart;
+  chart.axes = {"All solution curves and the best per speed (seed 001 Fig. 9.1)", "mean speed v (m/s)",
+                "objective " + name + " (-)", true};
+  auto series_of = [](const std::vector<GaitPoint>& points, Series s) {
+    for (const GaitPoint& p : points)
+      if (p.converged) {
+        s.x.push_back(p.gait.mean_speed);
+        s.y.push_back(p.gait.objective);
+      }
+    return s;
+  };
+  // The envelope first, wide and pale beneath the curves it is taken from.
+  Series best = series_of(job.points, {"curve 0: best per speed (envelope)", {}, {}, true, false, Color{0, 0, 0, 0.28}, 9.0});
+  if (!best.x.empty()) chart.series.push_back(std::move(best));
+  for (const SolutionCurve& c : job.curves) {
+    Series s = series_of(c.points, {"curve " + std::to_string(c.curve), {}, {}, true, false, palette(c.curve - 1), 2.0});
+    if (!s.x.empty()) chart.series.push_back(std::move(s));
+  }
+  if (chart.series.empty()) throw std::invalid_argument(no_converged_gait({job}));
+  return chart;
 }
 
 }  // namespace cyclopt::plot

@@ -27,6 +27,10 @@ void render_to(const Figure& f, const std::string& path) {
 
 }  // namespace
 
+const GaitPoint* chosen_point(const WalkerJobResults& job, double speed) {
+  return point_near(job, std::isfinite(speed) ? speed : middle_speed(job));
+}
+
 const std::vector<std::string>& walker_figure_kinds() {
   static const std::vector<std::string> kinds = {"cost-of-transport", "torques", "step-length", "floquet",
                                                  "stroboscope", "foot"};
@@ -36,7 +40,7 @@ const std::vector<std::string>& walker_figure_kinds() {
 Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults>& jobs, double speed) {
   if (jobs.empty()) throw std::invalid_argument("plot " + kind + ": no job given");
   if (kind == "cost-of-transport")
-    return {"cost_of_transport", "Mechanical cost of transport f_mech over speed (seed 001 Fig. 9.19a)",
+    return {"cost_of_transport", "Mechanical cost of transport f_{mech} over speed (seed 001 Fig. 9.19a)",
             cost_of_transport_chart(jobs), {}};
   if (kind == "torques")
     return {"max_torques", "Maximal joint torques over speed (seed 001 Fig. 9.4)", max_torque_chart(jobs), {}};
@@ -45,14 +49,14 @@ Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults
   if (kind == "floquet")
     return {"floquet_multiplier", "Floquet multiplier over speed (seed 001 Fig. 9.6b)", floquet_chart(jobs), {}};
   if (kind == "stroboscope") {
-    const GaitPoint* p = point_near(jobs.front(), std::isfinite(speed) ? speed : middle_speed(jobs.front()));
+    const GaitPoint* p = chosen_point(jobs.front(), speed);
     if (!p) throw std::invalid_argument("job " + std::to_string(jobs.front().id) +
                                         " has no converged gait with a stored trajectory");
     char caption[160];
     std::snprintf(caption, sizeof caption, "Two steps of the gait at %.2f m/s (seed 001 Fig. 9.2), %s", p->speed,
                   jobs.front().label.c_str());
     Scene scene = gait_stroboscope(jobs.front(), *p);
-    const RenderOptions size = fitted_options(scene, 760);
+    const RenderOptions size = fitted_options(scene, 760, 600, kPageWidth);
     return {"stroboscope", caption, std::move(scene), size};
   }
   if (kind == "foot") {
@@ -89,6 +93,11 @@ std::vector<std::string> write_figure(const Figure& f, const std::string& dir) {
     render_to(f, paths.back());
   }
   return paths;
+}
+
+ReportFigure report_figure(const Figure& f) {
+  return {f.caption, svg_of(f), [drawing = f.drawing](Canvas& c) { std::visit([&c](const auto& d) { draw(d, c); }, drawing); },
+          f.options};
 }
 
 std::string svg_of(const Figure& f) {

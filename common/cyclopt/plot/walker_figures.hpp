@@ -7,6 +7,7 @@
 //   stroboscope        two steps of the gait nearest a speed, first job (Fig. 9.2)
 //   foot               the first foot (not point feet) of the jobs with its generating polygon (Fig. 3.5a)
 
+#include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/plot/line_chart.hpp"
 #include "cyclopt/plot/scene.hpp"
 #include "cyclopt/plot/walker_job_results.hpp"
@@ -27,6 +28,10 @@ struct Figure {
 
 const std::vector<std::string>& walker_figure_kinds();
 
+// The converged gait with a trajectory nearest `speed` (NaN: the middle of the converged speeds) of
+// the job: the stroboscope's and the report's within-step figures' gait; nullptr when there is none.
+const GaitPoint* chosen_point(const WalkerJobResults& job, double speed);
+
 // Throws std::invalid_argument for an unknown kind (naming the known ones) or when the jobs hold
 // nothing to draw for it (no converged gait, no trajectory, point feet for "foot").
 // `speed` (m/s) selects the stroboscope's gait; NaN: the middle of the converged points.
@@ -42,5 +47,7 @@ std::vector<Figure> walker_figures(const std::vector<WalkerJobResults>& jobs,
 // Writes DIR/NAME.png and DIR/NAME.svg (creating DIR); returns both paths.
 std::vector<std::string> write_figure(const Figure& figure, const std::string& dir);
 std::string svg_of(const Figure& figure);
+// The figure for a report: its SVG for the HTML page and its drawing for the PDF.
+ReportFigure report_figure(const Figure& figure);
 
 }  // namespace cyclopt::plot

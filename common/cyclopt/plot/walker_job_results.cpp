@@ -10,6 +10,12 @@
 
 namespace cyclopt::plot {
 
+const char* joint_name(int j) {
+  static const char* names[] = {"H1 stance hip", "H2 swing hip", "K1 stance knee", "K2 swing knee",
+                                "A1 stance ankle", "A2 swing ankle"};
+  return names[j];
+}
+
 StoredWalker stored_walker(const nlohmann::json& spec) {
   StoredWalker w;
   w.setup = spec.get<records::WalkerSetupRecord>();
@@ -37,6 +43,13 @@ WalkerJobResults walker_job_results(const nlohmann::json& doc) {
   r.label = r.spec.value("name", "job " + std::to_string(r.id) + ": " + foot + ", " +
                                      r.spec.value("objective", std::string("f_mech")));
   r.points = gait_points(doc, 0);
+  std::map<int, std::string> curves;  // curve -> its stored name
+  const nlohmann::json none = nlohmann::json::array();
+  for (const nlohmann::json& s : doc.contains("solutions") ? doc["solutions"] : none)
+    if (s.value("curve", 0) > 0) curves[s.value("curve", 0)];
+  for (const nlohmann::json& c : doc.contains("curves") ? doc["curves"] : none)
+    if (curves.count(c.value("curve", 0))) curves[c.value("curve", 0)] = c.value("name", "");
+  for (const auto& [curve, name] : curves) r.curves.push_back({curve, name, gait_points(doc, curve)});
   return r;
 }
 

@@ -31,6 +31,10 @@ struct GaitPoint {
   std::optional<double> seed_spread;
 };
 
+// The name of joint j of q_b (eq. 5.3; 4 joints for point feet, 6 with feet), as the rows of a
+// stored trajectory's torque (and q rows 1 + j) hold them: "H1 stance hip", ..., "A2 swing ankle".
+const char* joint_name(int joint);
+
 // The walker a job's points were solved on, from its setup record.
 struct StoredWalker {
   records::WalkerSetupRecord setup;
@@ -45,12 +49,20 @@ StoredWalker stored_walker(const nlohmann::json& spec);
 // That stored spec.
 const nlohmann::json& stored_spec(const nlohmann::json& document);
 
+// A solution curve a sweep followed (curve c >= 1 of the store, as `cyclopt query` numbers it).
+struct SolutionCurve {
+  int curve = 0;
+  std::string name;
+  std::vector<GaitPoint> points;  // in point order
+};
+
 struct WalkerJobResults {
   std::int64_t id = 0;
   std::string label;  // for legends: the spec's name, else "job N: foot, objective"
   nlohmann::json spec;  // as stored (the resolved spec where the job has one)
   StoredWalker walker;
   std::vector<GaitPoint> points;  // curve 0, in point order
+  std::vector<SolutionCurve> curves;  // the stored curves after 0 (a sweep's solution curves)
 };
 
 // Throws std::invalid_argument when the document is not a walker job of a task with gaits, and

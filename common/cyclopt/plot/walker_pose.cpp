@@ -31,9 +31,13 @@ WalkerPose walker_pose(const walker::WalkerModel<double>& m, const walker::Coord
   p.ankle2 = xz(walker::point_position(f, m.swing_ankle));
   p.swing_lowest = xz(walker::swing_contact_point(m, f));
   p.contact = p.ankle1;
+  p.contact_in_foot = {0, 0};
   if (m.has_feet()) {
     p.contact = {p.ankle1[0] + f.stance_foot.ddF, p.ankle1[1] - f.stance_foot.dF};
-    p.foot1 = placed(foot_outline, f.angle(walker::seg_F1) - m.foot_zero_angle, p.ankle1);
+    const double turn = f.angle(walker::seg_F1) - m.foot_zero_angle, c = std::cos(turn), s = std::sin(turn);
+    const double dx = p.contact[0] - p.ankle1[0], dz = p.contact[1] - p.ankle1[1];
+    p.contact_in_foot = {c * dx - s * dz, s * dx + c * dz};  // placed() undone
+    p.foot1 = placed(foot_outline, turn, p.ankle1);
     p.foot2 = placed(foot_outline, f.angle(walker::seg_F2) - m.foot_zero_angle, p.ankle2);
   }
   return p;

@@ -18,6 +18,7 @@ struct WalkerPose {
   Xz torso_tip, hip, knee1, knee2, ankle1, ankle2;  // 1: stance leg, 2: swing leg
   std::vector<Xz> foot1, foot2;  // closed outlines (empty for point feet)
   Xz contact;                    // rolling contact point C1 = A1 + [F''_A; -F'_A] on the ground z = 0
+  Xz contact_in_foot;            // C1 in the stance foot's frame (the outline's), ankle at 0 (0 for point feet)
   Xz swing_lowest;               // lowest point of the swing foot C2 (eq. 5.5)
 };
 
