@@ -715,13 +715,14 @@ TEST_F(WalkerFigures, QueryPrintsOneReadableLinePerPoint) {
   EXPECT_EQ(nlohmann::json::parse(text_of(dir / "table.json")).size(), point_feet_->points.size());
   const std::vector<std::string> jobs = output("list", "jobs.txt");
   ASSERT_EQ(jobs.size(), 2u);
-  const std::size_t at = jobs[0].find("submitted_at");
-  ASSERT_NE(at, std::string::npos);
-  const std::string submitted = jobs[1].substr(at, 20);
-  EXPECT_EQ(submitted.size(), 20u);
-  EXPECT_EQ(submitted[4], '-');
-  EXPECT_EQ(submitted[10], 'T');
-  EXPECT_EQ(submitted[19], 'Z') << jobs[1];
+  // list: ISO 8601 local times to the minute (docs/watching-jobs.md).
+  const std::size_t at = jobs[0].find("SUBMITTED");
+  ASSERT_NE(at, std::string::npos) << jobs[0];
+  const std::string submitted = jobs[1].substr(at, 16);
+  ASSERT_EQ(submitted.size(), 16u) << jobs[1];
+  EXPECT_EQ(submitted[4], '-') << jobs[1];
+  EXPECT_EQ(submitted[10], 'T') << jobs[1];
+  EXPECT_EQ(submitted[13], ':') << jobs[1];
 }
 
 }  // namespace
