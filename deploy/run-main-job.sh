@@ -42,8 +42,10 @@ cat > "$OUT/comparison.json" <<SPEC
 SPEC
 # An incomplete job (exit 5: some speeds without a converged gait) still gets its table, pictures
 # and report; the script then ends with that exit code.
-job_id() { tee /dev/stderr | grep -o '^job [0-9]*' | grep -o '[0-9]*'; }
-COMPARISON=$("$CYCLOPT" submit --spec "$OUT/comparison.json" | job_id)
+# Submits a spec file, shows the server's answer and sets JOB to the new job's id.
+submit() { local answer; answer=$("$CYCLOPT" submit --spec "$1"); echo "$answer"; JOB=$(grep -o '^job [0-9]*' <<<"$answer" | grep -o '[0-9]*'); }
+submit "$OUT/comparison.json"
+COMPARISON=$JOB
 OUTCOME=0
 "$CYCLOPT" watch "$COMPARISON" || OUTCOME=$?
 [ "$OUTCOME" -eq 0 ] || [ "$OUTCOME" -eq 5 ] || exit "$OUTCOME"
@@ -57,7 +59,8 @@ cat > "$OUT/gait.json" <<SPEC
 {"scene": "walker", "task": "optimise", "name": "$FOOT at $SEED_SPEED m/s", "foot": $FOOT_JSON,
  "speed": $SEED_SPEED, "objective": "f_mech", "start": {"job": $COMPARISON, "curve": 2, "point": ${POINT:-0}}}
 SPEC
-GAIT=$("$CYCLOPT" submit --spec "$OUT/gait.json" | job_id)
+submit "$OUT/gait.json"
+GAIT=$JOB
 "$CYCLOPT" watch "$GAIT"
 echo
 echo "database: $OUT/cyclopt.db (read it with: $CYCLOPT query $COMPARISON --db $OUT/cyclopt.db)"
