@@ -109,6 +109,14 @@ void WorkerJobContext::flush_progress() {
   publish(last);
 }
 
+void WorkerJobContext::publish_notice(const std::string& message) {
+  std::lock_guard lock(progress_mutex_);
+  service::ProgressReport r;
+  r.points_done = points_stored_;
+  r.message = message;
+  publish(r);
+}
+
 void WorkerJobContext::publish(const service::ProgressReport& r) {
   const auto now = std::chrono::steady_clock::now();
   pending_.reset();

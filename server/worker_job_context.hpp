@@ -46,6 +46,8 @@ class WorkerJobContext final : public service::JobContext {
 
   // Publishes the last report if rate limiting held it back.
   void flush_progress();
+  // Publishes a progress message that says only `message` (what the worker does about a fault).
+  void publish_notice(const std::string& message);
   double elapsed_seconds() const;
   // This attempt's seconds not yet added to the store's run_seconds.
   double unrecorded_seconds() {

@@ -236,7 +236,7 @@ std::optional<JobRecord> ResultStore::claim_next() {
   return r;
 }
 
-RecoverySummary ResultStore::recover_interrupted() {
+RecoverySummary ResultStore::recover_interrupted(const std::set<std::int64_t>& live, const std::string& why) {
   std::lock_guard lock(mutex_);
   Transaction tx(db_);
   RecoverySummary s;
@@ -246,11 +246,12 @@ RecoverySummary ResultStore::recover_interrupted() {
     while (q.step()) running.emplace_back(q.int64(0), q.int64(1) != 0);
   }
   for (const auto& [id, cancel] : running) {
+    if (live.count(id)) continue;
     if (cancel)
       Statement(db_, "UPDATE jobs SET state = 'cancelled', finished_at = ? WHERE id = ?").bind(1, unix_now()).bind(2, id).run();
     else
       Statement(db_, "UPDATE jobs SET state = 'queued', started_at = NULL WHERE id = ?").bind(1, id).run();
-    add_event_locked(id, cancel ? "cancelled" : "requeued", "interrupted while running (server restart)");
+    add_event_locked(id, cancel ? "cancelled" : "requeued", why);
     ++(cancel ? s.cancelled : s.requeued);
   }
   tx.commit();

@@ -80,7 +80,10 @@ class ResultStore {
   SubmitOutcome submit(const std::string& request_id, const std::string& scene, const std::string& task,
                        const std::string& spec_json);
   std::optional<JobRecord> claim_next();  // oldest queued job -> running (attempts + 1)
-  RecoverySummary recover_interrupted();  // running -> queued, or cancelled if cancel was asked
+  // running -> queued, or cancelled if cancel was asked, except the jobs in `live` (those a worker
+  // of this server runs); `why` goes into each job's event.
+  RecoverySummary recover_interrupted(const std::set<std::int64_t>& live = {},
+                                      const std::string& why = "interrupted while running (server restart)");
   // run_seconds, publish_seconds: what this attempt adds to the job's totals (beyond what
   // add_run_seconds() already recorded). Both commit the state change before its event, and the
   // event only if the file has room for it, so a job's state can still be recorded on a full disk.
