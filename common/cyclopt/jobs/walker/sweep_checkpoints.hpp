@@ -4,6 +4,8 @@
 // resumes with the solves and continuation runs it had finished (issue 19 item 5). Keys:
 //   "solve/<batch>/<start>"  one multistart solve (an nlp::SolverSummary)
 //   "run/<n>"                one continuation run (a continuation::ContinuationResult)
+//   "run_state/<n>"          where run n stood at its last converged point (continuation::RunState),
+//                            replaced at each; a resumed run goes on from there
 // The walker multistart job uses the same journal for its single batch (batch 0). A job of several
 // sweeps (foot_design_kind.hpp) gives each its own prefix: "<prefix>solve/...", "<prefix>run/...".
 // Values are JSON with every field, doubles in round-trip precision, so a replayed sweep takes the
