@@ -63,12 +63,12 @@ std::optional<T> RequestHandler::receive(std::span<const std::uint8_t> raw, cons
   key = wire::verify_signature(*keys_, sig, channel, raw, msg->request_id, wire::unix_now_us(), problem);
   if (key) return msg;
   ++counters_.unauthenticated;
-  reject(msg->request_id, "signature", std::string("signature: ") + problem + " (this server accepts only messages "
-                                           "signed with a key of its key file)");
+  reject(msg->request_id, "signature", channels::kSignatureRejected);  // fixed and unsigned: nothing to learn from it
   return std::nullopt;
 }
 
 void RequestHandler::subscribe(wire::MessageBus& bus) {
+  bus_ = &bus;
   bus.subscribe(channels::kSubmit, [this](std::span<const std::uint8_t> p) { on_submit(p); });
   bus.subscribe(channels::kCancel, [this](std::span<const std::uint8_t> p) { on_cancel(p); });
   bus.subscribe(channels::kQuery, [this](std::span<const std::uint8_t> p) { on_query(p); });
@@ -192,6 +192,9 @@ void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
   if (!decoded) return;
   const cyclopt_lcm::query_request_t& msg = *decoded;
   ++counters_.queries;
+  // Under authentication a key reads its own jobs, an admin key every job (auth_reads "owner"),
+  // unless the server lets every key read every job (auth_reads "any").
+  const bool own_jobs_only = key && !key->admin && config_.auth_reads == AuthReads::owner;
   cyclopt_lcm::query_reply_t reply;
   reply.request_id = msg.request_id.substr(0, kMaxEchoedRequestIdBytes);
   reply.offset = msg.offset;
@@ -206,8 +209,13 @@ void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
     const bool cached = msg.part_offset > 0 && parted_.what == msg.what && parted_.job_id == msg.job_id &&
                         parted_.state == msg.state && parted_.offset == msg.offset;
     // At most kRowsPerReply rows are read: a reply carries 48 KiB, and result rows can be large.
-    const storage::QueryPage page = storage::run_query(
-        store_, {msg.what, msg.job_id, msg.state, msg.offset, std::min(msg.limit, cached ? 1 : kRowsPerReply)});
+    storage::QueryRequest request{msg.what, msg.job_id, msg.state, msg.offset,
+                                  std::min(msg.limit, cached ? 1 : kRowsPerReply), std::nullopt};
+    if (own_jobs_only && msg.what == "jobs") request.sender = key->id;
+    if (own_jobs_only && msg.what != "jobs" && owners_->owner(msg.job_id) != key && store_.job(msg.job_id))
+      throw std::invalid_argument("job_id: job " + std::to_string(msg.job_id) + " was not submitted with key '" + key->id +
+                                  "'; only its submitter's key or an admin key may read it");
+    const storage::QueryPage page = storage::run_query(store_, request);
     reply.total = page.total;
     // Rows as ASCII text (non-ASCII escaped), so that a row can be cut into parts at any byte.
     std::string rows = "[";

@@ -443,27 +443,37 @@ std::optional<JobRecord> ResultStore::job(std::int64_t job_id) {
   return read_job(q);
 }
 
-std::vector<JobRecord> ResultStore::jobs(std::optional<JobState> state, int offset, int limit) {
+std::vector<JobRecord> ResultStore::jobs(std::optional<JobState> state, int offset, int limit,
+                                         const std::optional<std::string>& sender) {
   std::lock_guard lock(mutex_);
   Statement q(db_, std::string("SELECT ") + kJobColumns +
-                       " FROM jobs j WHERE (?1 IS NULL OR j.state = ?1) ORDER BY j.id LIMIT ?2 OFFSET ?3");
+                       " FROM jobs j WHERE (?1 IS NULL OR j.state = ?1) AND (?4 IS NULL OR j.sender = ?4) "
+                       "ORDER BY j.id LIMIT ?2 OFFSET ?3");
   if (state)
     q.bind(1, to_string(*state));
   else
     q.bind(1, std::nullopt);
   q.bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
+  if (sender)
+    q.bind(4, *sender);
+  else
+    q.bind(4, std::nullopt);
   std::vector<JobRecord> out;
   while (q.step()) out.push_back(read_job(q));
   return out;
 }
 
-int ResultStore::count_jobs(std::optional<JobState> state) {
+int ResultStore::count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender) {
   std::lock_guard lock(mutex_);
-  Statement q(db_, "SELECT count(*) FROM jobs WHERE (?1 IS NULL OR state = ?1)");
+  Statement q(db_, "SELECT count(*) FROM jobs WHERE (?1 IS NULL OR state = ?1) AND (?2 IS NULL OR sender = ?2)");
   if (state)
     q.bind(1, to_string(*state));
   else
     q.bind(1, std::nullopt);
+  if (sender)
+    q.bind(2, *sender);
+  else
+    q.bind(2, std::nullopt);
   q.step();
   return static_cast<int>(q.int64(0));
 }

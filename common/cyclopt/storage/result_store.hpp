@@ -110,8 +110,10 @@ class ResultStore {
 
   // Reads.
   std::optional<JobRecord> job(std::int64_t job_id);
-  std::vector<JobRecord> jobs(std::optional<JobState> state, int offset, int limit);
-  int count_jobs(std::optional<JobState> state);
+  // sender: only the jobs it submitted (Submission::sender).
+  std::vector<JobRecord> jobs(std::optional<JobState> state, int offset, int limit,
+                              const std::optional<std::string>& sender = std::nullopt);
+  int count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender = std::nullopt);
   Connection& connection() { return db_; }  // for result_queries.hpp; lock with mutex()
   std::mutex& mutex() { return mutex_; }
 
