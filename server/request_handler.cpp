@@ -125,7 +125,11 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec(spec, kinds_));
     const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
-    const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
+    // The quota's sender: the key, or for an unauthenticated client its host (the datagram's source
+    // address, which the server's own udpm receiver reads); one shared pool only where the provider
+    // gives no address (memq://, file://).
+    const std::string host = bus_ ? bus_->current_source() : "";
+    const std::string sender = key ? key->id : host.empty() ? "" : "host " + host;
     const nlohmann::json resolved = service::resolved_spec(*v);
     // The parsed spec goes to the worker with the job: it is not parsed again.
     const storage::SubmitOutcome out = pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender,

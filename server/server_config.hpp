@@ -68,8 +68,8 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
   --max-job-iterations N per-job iteration cap, 1..1e9 (default 100000)
   --max-job-memory-mb MB a job whose estimated peak memory exceeds it is rejected,
                          [16, 1048576] (default 4096)
-  --max-queued-jobs N    queued jobs per sender (the authenticated key; all unauthenticated
-                         clients share one quota), 1..1e6 (default 100)
+  --max-queued-jobs N    queued jobs per sender (the authenticated key, or for unauthenticated
+                         clients the sending host), 1..1e6 (default 100)
   --max-queued-hours H   estimated hours of queued jobs per sender, (0, 1e6] (default 168)
   --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
   --executor E           local (default: the workers compute the jobs) or slurm (each worker

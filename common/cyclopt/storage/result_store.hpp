@@ -28,7 +28,8 @@ struct RequiredPoint {
 };
 
 // What a submission adds to the queue. sender identifies the submitter for the queue quota (the
-// authenticated key, or "" for unauthenticated clients, who then share one quota).
+// authenticated key, "host <address>" for an unauthenticated client whose address the server
+// knows, else "", one quota shared by all such clients).
 struct Submission {
   std::string request_id;
   std::string scene;
