@@ -28,6 +28,8 @@ nlohmann::json summary_to_json(const nlp::SolverSummary& s);
 nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws records::RecordError
 nlohmann::json run_to_json(const continuation::ContinuationResult& r);
 continuation::ContinuationResult run_from_json(const nlohmann::json& j);
+nlohmann::json run_state_to_json(const continuation::RunState& s);
+continuation::RunState run_state_from_json(const nlohmann::json& j);
 
 // One foot's finished sweep reduced to its best point per speed (studies::FootSweepSummary): the
 // result a comparison's or a design's work unit leaves for its job (foot/foot_comparison_kind.cpp,
