@@ -38,7 +38,8 @@ wait_for() {
   until "$@"; do [ "$(date +%s)" -lt "$deadline" ] || return 1; sleep 0.05; done
 }
 start_server() {  # start_server DB
-  "$CYCLOPTD" --database "$1" --workers 1 >>"$WORK/server-$(basename "$1").log" 2>&1 &
+  # shellcheck disable=SC2086  # CYCLOPTD_ARGS: further cycloptd flags, e.g. higher job caps for a long sweep
+  "$CYCLOPTD" --database "$1" --workers 1 ${CYCLOPTD_ARGS:-} >>"$WORK/server-$(basename "$1").log" 2>&1 &
   SERVER=$!
   wait_for 10 "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 || fail "server did not come up"
 }
