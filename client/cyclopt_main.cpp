@@ -781,6 +781,9 @@ int main(int argc, char** argv) {
   } catch (const cyclopt::client::QueryError& e) {
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
     return kRejected;
+  } catch (const cyclopt::client::SignatureRejected& e) {  // the key file's key or secret is not the server's
+    std::fprintf(stderr, "cyclopt: %s\n", e.what());
+    return kRejected;
   } catch (const std::invalid_argument& e) {  // local queries: unknown job, bad filter
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
     return kRejected;

@@ -54,6 +54,17 @@ std::optional<T> ServiceClient::checked(const char* channel, std::span<const std
 }
 
 void ServiceClient::on_ack(std::span<const std::uint8_t> payload) {
+  // The server's fixed answer to a signature it does not accept comes unsigned: believed as what
+  // it says and nothing more (a forged one only ends the wait that silence would end too).
+  std::span<const std::uint8_t> unsigned_part = payload;
+  wire::split_signature(unsigned_part);
+  std::string problem;
+  const auto fixed = wire::decode_checked<cyclopt_lcm::job_ack_t>(unsigned_part, problem);
+  if (fixed && !fixed->accepted && fixed->field == "signature" && fixed->problem == channels::kSignatureRejected &&
+      awaiting_.count(fixed->request_id)) {
+    signature_rejected_.insert(fixed->request_id);
+    return;
+  }
   const auto m = checked<cyclopt_lcm::job_ack_t>(channels::kAck, payload);
   if (m && awaiting_.count(m->request_id)) acks_[m->request_id] = *m;
 }
@@ -82,8 +93,12 @@ bool ServiceClient::pump_until(const std::function<bool()>& done, double s) {
 
 template <class Reply>
 std::optional<Reply> ServiceClient::await(std::map<std::string, Reply>& answers, const std::string& id, double s) {
-  const bool got = pump_until([&] { return answers.count(id) > 0; }, s);
+  const bool got = pump_until([&] { return answers.count(id) > 0 || signature_rejected_.count(id) > 0; }, s);
   if (!got) return std::nullopt;
+  if (signature_rejected_.erase(id)) {
+    awaiting_.erase(id);
+    throw SignatureRejected(channels::kSignatureRejected);
+  }
   Reply r = answers[id];
   answers.erase(id);
   return r;
@@ -208,7 +223,12 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::send_raw(const std::string&
                                                               const std::string& reply_id, double timeout_seconds) {
   awaiting_.insert(reply_id);
   bus_.publish(channel, wire::as_bytes(bytes));
-  auto ack = await(acks_, reply_id, timeout_seconds);
+  std::optional<cyclopt_lcm::job_ack_t> ack;
+  try {
+    ack = await(acks_, reply_id, timeout_seconds);
+  } catch (const SignatureRejected& e) {
+    ack = cyclopt_lcm::job_ack_t{reply_id, false, -1, false, "", "signature", e.what()};
+  }
   awaiting_.erase(reply_id);
   return ack;
 }

@@ -33,6 +33,13 @@ class QueryError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The server did not accept the request's signature (channels::kSignatureRejected): an unknown
+// key, a wrong secret, or a clock more than the allowed skew away from the server's.
+class SignatureRejected : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class ServiceClient {
  public:
   // `url`: the one `lcm` was opened with (wire::resolved_lcm_url); udpm:// receives through the
@@ -41,6 +48,8 @@ class ServiceClient {
   // with it are believed (message_auth.hpp); without it signatures are ignored.
   explicit ServiceClient(lcm::LCM& lcm, const std::string& url = "", std::optional<wire::AuthKey> key = std::nullopt);
 
+  // Every request below throws SignatureRejected when the server answers that it does not accept
+  // the request's signature (the one answer believed unsigned, cyclopt_channels.hpp).
   // Publishes the submission every retry_seconds until an answer for request_id arrives or
   // timeout_seconds pass (nullopt). The answer may be a rejection (accepted = false).
   std::optional<cyclopt_lcm::job_ack_t> submit(const std::string& request_id, const std::string& spec_json,
@@ -59,7 +68,8 @@ class ServiceClient {
   // Calls on_progress for every progress message of any job for `seconds` (cyclopt top).
   void listen(const std::function<void(const cyclopt_lcm::job_progress_t&)>& on_progress, double seconds);
 
-  // For tests: publishes arbitrary bytes and waits for the ack with request id `reply_id`.
+  // For tests: publishes arbitrary bytes and waits for the ack with request id `reply_id` (a
+  // signature rejection returned as the ack it is, not thrown).
   std::optional<cyclopt_lcm::job_ack_t> send_raw(const std::string& channel, const std::string& bytes,
                                                  const std::string& reply_id, double timeout_seconds);
   // Received payloads that were not a well-formed encoding of their channel's type.
@@ -88,6 +98,7 @@ class ServiceClient {
   long malformed_ = 0;
   long unverified_ = 0;
   std::set<std::string> awaiting_;  // request ids whose answers are kept
+  std::set<std::string> signature_rejected_;  // ... answered with channels::kSignatureRejected
   std::map<std::string, cyclopt_lcm::job_ack_t> acks_;
   std::map<std::int64_t, cyclopt_lcm::job_done_t> done_;
   std::map<std::string, cyclopt_lcm::query_reply_t> replies_;

@@ -22,4 +22,10 @@ inline constexpr std::size_t kMaxRequestIdBytes = 64;
 inline constexpr std::size_t kMaxQueryReplyRowBytes = 48 * 1024;  // query_reply_t::rows_json
 inline constexpr int kMaxQueryLimit = 1000;
 
+// Under authentication, the server's whole answer to a request whose signature it does not accept
+// (unsigned, unknown key, wrong secret, stale or replayed): a job_ack_t on kAck, unsigned (the
+// server cannot sign for a key it does not know), with field "signature", this problem and
+// nothing else, whatever the request's channel. docs/operating-the-service.md says why it is harmless.
+inline constexpr const char* kSignatureRejected = "signature rejected (unknown key or wrong secret)";
+
 }  // namespace cyclopt::channels

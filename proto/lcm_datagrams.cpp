@@ -63,7 +63,7 @@ std::optional<LcmMessage> DatagramAssembler::feed(std::span<const std::uint8_t> 
   }
   const auto payload = rest.subspan(channel->size() + 1);
   ++counters_.messages;
-  return LcmMessage{*channel, {payload.begin(), payload.end()}};
+  return LcmMessage{*channel, {payload.begin(), payload.end()}, ""};
 }
 
 std::optional<LcmMessage> DatagramAssembler::feed_fragment(std::span<const std::uint8_t> d, std::uint64_t sender,
@@ -129,7 +129,7 @@ std::optional<LcmMessage> DatagramAssembler::feed_fragment(std::span<const std::
   std::copy(body.begin(), body.end(), a.data.begin() + static_cast<std::ptrdiff_t>(offset));
   a.last_seen = now;
   if (--a.fragments_left > 0) return std::nullopt;
-  LcmMessage m{std::move(a.channel), std::move(a.data)};
+  LcmMessage m{std::move(a.channel), std::move(a.data), ""};
   pending_bytes_ -= m.payload.size();
   pending_.erase(it);
   ++counters_.messages;

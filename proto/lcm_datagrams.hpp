@@ -27,6 +27,7 @@ inline constexpr std::size_t kMaxChannelBytes = 63;  // LCM_MAX_CHANNEL_NAME_LEN
 struct LcmMessage {
   std::string channel;
   std::vector<std::uint8_t> payload;
+  std::string source;  // the sending host's address as the receiver saw it ("" where unknown)
 };
 
 struct AssemblerLimits {

@@ -36,7 +36,11 @@ void MessageBus::dispatch(const std::string& channel, std::span<const std::uint8
 
 int MessageBus::handle_timeout(int timeout_ms) {
   if (!receiver_) return lcm_.handleTimeout(timeout_ms) > 0 ? 1 : 0;
-  return receiver_->receive(timeout_ms, [&](const LcmMessage& m) { dispatch(m.channel, m.payload); });
+  return receiver_->receive(timeout_ms, [&](const LcmMessage& m) {
+    source_ = m.source;
+    dispatch(m.channel, m.payload);
+    source_.clear();
+  });
 }
 
 void MessageBus::publish(const std::string& channel, std::span<const std::uint8_t> bytes) {

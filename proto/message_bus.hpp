@@ -50,6 +50,11 @@ class MessageBus {
     publish(channel, as_bytes(bytes));
   }
 
+  // The sending host of the message being dispatched, for its handlers: the IPv4 source address
+  // of its datagrams on udpm:// (our own receiver reads it); "" on other providers, since
+  // liblcm 1.3.1 passes no source address to its subscribers (lcm_recv_buf_t has none).
+  const std::string& current_source() const { return source_; }
+
   // Datagram statistics of the own receiver (nullptr on non-udpm providers).
   const AssemblerCounters* datagram_counters() const { return receiver_ ? &receiver_->counters() : nullptr; }
 
@@ -62,6 +67,7 @@ class MessageBus {
   std::map<std::string, std::vector<Handler>> handlers_;
   std::vector<lcm::Subscription*> subscriptions_;
   std::mutex publish_mutex_;
+  std::string source_;  // of the message being dispatched
 };
 
 }  // namespace cyclopt::wire

@@ -98,6 +98,9 @@ int UdpmReceiver::receive(int timeout_ms, const std::function<void(const LcmMess
     const std::uint64_t sender = std::uint64_t{ntohl(from.sin_addr.s_addr)} << 16 | ntohs(from.sin_port);
     const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     if (auto m = assembler_.feed({buffer_.data(), static_cast<std::size_t>(n)}, sender, now)) {
+      char host[INET_ADDRSTRLEN] = "";
+      inet_ntop(AF_INET, &from.sin_addr, host, sizeof host);
+      m->source = host;  // the datagram that completed it: an assembly is one sender's (ip:port)
       on_message(*m);
       ++delivered;
     }

@@ -19,7 +19,7 @@ const wire::AuthKey* JobOwners::owner(std::int64_t job_id) {
   auto it = cache_.find(job_id);
   if (it == cache_.end()) {
     std::string id;
-    for (const auto& e : storage::run_query(store_, {"events", job_id, "", 0, 1000}).rows)
+    for (const auto& e : storage::run_query(store_, {"events", job_id, "", 0, 1000, std::nullopt}).rows)
       if (e["kind"] == kSubmittedBy) id = e["message"].get<std::string>();
     it = cache_.emplace(job_id, id).first;
   }

@@ -63,12 +63,12 @@ std::optional<T> RequestHandler::receive(std::span<const std::uint8_t> raw, cons
   key = wire::verify_signature(*keys_, sig, channel, raw, msg->request_id, wire::unix_now_us(), problem);
   if (key) return msg;
   ++counters_.unauthenticated;
-  reject(msg->request_id, "signature", std::string("signature: ") + problem + " (this server accepts only messages "
-                                           "signed with a key of its key file)");
+  reject(msg->request_id, "signature", channels::kSignatureRejected);  // fixed and unsigned: nothing to learn from it
   return std::nullopt;
 }
 
 void RequestHandler::subscribe(wire::MessageBus& bus) {
+  bus_ = &bus;
   bus.subscribe(channels::kSubmit, [this](std::span<const std::uint8_t> p) { on_submit(p); });
   bus.subscribe(channels::kCancel, [this](std::span<const std::uint8_t> p) { on_cancel(p); });
   bus.subscribe(channels::kQuery, [this](std::span<const std::uint8_t> p) { on_query(p); });
@@ -125,7 +125,11 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     auto v = std::make_shared<const service::ValidatedJobSpec>(service::validate_job_spec(spec, kinds_));
     const service::JobCost cost = v->estimate();
     service::check_cost(cost, {config_.caps.max_wall_seconds, config_.max_job_memory_mb * (1 << 20)});
-    const std::string sender = key ? key->id : "";  // unauthenticated clients share one quota
+    // The quota's sender: the key, or for an unauthenticated client its host (the datagram's source
+    // address, which the server's own udpm receiver reads); one shared pool only where the provider
+    // gives no address (memq://, file://).
+    const std::string host = bus_ ? bus_->current_source() : "";
+    const std::string sender = key ? key->id : host.empty() ? "" : "host " + host;
     const nlohmann::json resolved = service::resolved_spec(*v);
     // The parsed spec goes to the worker with the job: it is not parsed again.
     const storage::SubmitOutcome out = pool_.submit({msg.request_id, v->scene, v->task, msg.spec_json, sender,
@@ -192,6 +196,9 @@ void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
   if (!decoded) return;
   const cyclopt_lcm::query_request_t& msg = *decoded;
   ++counters_.queries;
+  // Under authentication a key reads its own jobs, an admin key every job (auth_reads "owner"),
+  // unless the server lets every key read every job (auth_reads "any").
+  const bool own_jobs_only = key && !key->admin && config_.auth_reads == AuthReads::owner;
   cyclopt_lcm::query_reply_t reply;
   reply.request_id = msg.request_id.substr(0, kMaxEchoedRequestIdBytes);
   reply.offset = msg.offset;
@@ -206,8 +213,13 @@ void RequestHandler::on_query(std::span<const std::uint8_t> payload) {
     const bool cached = msg.part_offset > 0 && parted_.what == msg.what && parted_.job_id == msg.job_id &&
                         parted_.state == msg.state && parted_.offset == msg.offset;
     // At most kRowsPerReply rows are read: a reply carries 48 KiB, and result rows can be large.
-    const storage::QueryPage page = storage::run_query(
-        store_, {msg.what, msg.job_id, msg.state, msg.offset, std::min(msg.limit, cached ? 1 : kRowsPerReply)});
+    storage::QueryRequest request{msg.what, msg.job_id, msg.state, msg.offset,
+                                  std::min(msg.limit, cached ? 1 : kRowsPerReply), std::nullopt};
+    if (own_jobs_only && msg.what == "jobs") request.sender = key->id;
+    if (own_jobs_only && msg.what != "jobs" && owners_->owner(msg.job_id) != key && store_.job(msg.job_id))
+      throw std::invalid_argument("job_id: job " + std::to_string(msg.job_id) + " was not submitted with key '" + key->id +
+                                  "'; only its submitter's key or an admin key may read it");
+    const storage::QueryPage page = storage::run_query(store_, request);
     reply.total = page.total;
     // Rows as ASCII text (non-ASCII escaped), so that a row can be cut into parts at any byte.
     std::string rows = "[";

@@ -9,7 +9,11 @@
 // is rejected (field "signature") and counted; answers are signed with the requester's key, and
 // a job may be cancelled only by its submitter's key or an admin key. A valid job whose
 // estimated cost exceeds the server's limits, or whose sender's queue quota is used up, is
-// rejected too (field: the spec field driving the cost, or "queue").
+// rejected too (field: the spec field driving the cost, or "queue"); the sender is the signing
+// key, or for unauthenticated clients the sending host (MessageBus::current_source). Under
+// authentication a key reads only its own jobs unless it is an admin key or auth_reads is "any",
+// and a request whose signature is not accepted gets the fixed unsigned
+// channels::kSignatureRejected.
 
 #include "cyclopt/service/job_kind.hpp"
 #include "cyclopt/storage/result_store.hpp"
@@ -66,6 +70,7 @@ class RequestHandler {
   WorkerPool& pool_;
   const wire::KeyRing* keys_;
   JobOwners* owners_;
+  const wire::MessageBus* bus_ = nullptr;  // subscribe()'s: the source of the message in hand
   RequestCounters counters_;
   // The last row sent in parts, serialised, so that each part does not serialise it again.
   struct PartedRow {

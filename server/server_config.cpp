@@ -51,9 +51,12 @@ void apply(ServerConfig& c, const std::string& key, const nlohmann::json& v) {
     for (const auto& [k, value] : v.items()) apply_slurm(c.slurm, k, value);
   } else if (key == "slurm_spool") c.slurm.spool = string_value(v, key, 4096);
   else if (key == "auth_secret_file") c.auth_secret_file = string_value(v, key, 4096);
-  else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, "
-                            "max_job_memory_mb, max_queued_jobs, max_queued_hours, progress_hz, executor, slurm, "
-                            "auth_secret_file)");
+  else if (key == "auth_reads") {
+    const std::string reads = enum_value(v, key, {"owner", "any"});
+    c.auth_reads = reads == "any" ? AuthReads::any : AuthReads::owner;
+  } else throw SpecError(key, "unknown setting (database, lcm_url, workers, max_job_seconds, max_job_iterations, "
+                              "max_job_memory_mb, max_queued_jobs, max_queued_hours, progress_hz, executor, slurm, "
+                              "auth_secret_file, auth_reads)");
 }
 
 }  // namespace
@@ -80,7 +83,8 @@ ServerConfig server_config_from_args(const std::vector<std::string>& args) {
     std::string key = a.substr(2);
     for (char& ch : key)
       if (ch == '-') ch = '_';
-    if (key == "auth_secret_file") throw std::invalid_argument(a + ": set auth_secret_file in the --config file");
+    if (key == "auth_secret_file" || key == "auth_reads")
+      throw std::invalid_argument(a + ": set " + key + " in the --config file");
     const bool text = key == "database" || key == "lcm_url" || key == "executor" || key == "slurm_spool";
     nlohmann::json v = text ? nlohmann::json(value) : nlohmann::json::parse(value, nullptr, false);
     if (v.is_discarded()) v = value;  // reported as a type error by apply()

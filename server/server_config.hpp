@@ -7,8 +7,8 @@
 //    "executor": "slurm", "slurm": {"spool": "/shared/cyclopt-spool", "partition": "batch", "account": "lab",
 //                                   "cpus_per_unit": 2, "time_limit_minutes": 120, "max_submissions": 4,
 //                                   "poll_seconds": 0.5, "worker": "/usr/local/bin/cyclopt-worker"},
-//    "auth_secret_file": "/etc/cyclopt/keys"}
-// auth_secret_file (message_auth.hpp) is accepted in the config file only.
+//    "auth_secret_file": "/etc/cyclopt/keys", "auth_reads": "owner"}
+// auth_secret_file (message_auth.hpp) and auth_reads are accepted in the config file only.
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/storage/result_store.hpp"
@@ -18,6 +18,10 @@
 #include <vector>
 
 namespace cyclopt::server {
+
+// Under authentication, who may read a job (status, list, query, watch): its submitter's key and
+// admin keys (owner), or every key of the key file (any). Cancel is always the owner's.
+enum class AuthReads { owner, any };
 
 struct ServerConfig {
   std::string database = "cyclopt.db";
@@ -30,6 +34,7 @@ struct ServerConfig {
   std::string executor = "local";  // local: worker threads run the jobs; slurm: workers dispatch them to Slurm
   remote::SlurmOptions slurm;      // with executor "slurm"
   std::string auth_secret_file;  // empty: messages are not authenticated (a warning at start)
+  AuthReads auth_reads = AuthReads::owner;
 };
 
 // Throws std::invalid_argument naming the key and the admissible range.
@@ -51,9 +56,10 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
 
   --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
                          max_job_iterations, max_job_memory_mb, max_queued_jobs,
-                         max_queued_hours, progress_hz, executor, slurm, auth_secret_file
-                         (flags given after it override it; the key file path is read from
-                         the config file only)
+                         max_queued_hours, progress_hz, executor, slurm, auth_secret_file,
+                         auth_reads (owner: a key reads only its own jobs, admin keys all;
+                         any: every key reads every job) (flags given after it override it;
+                         auth_secret_file and auth_reads are read from the config file only)
   --database FILE        results database (default cyclopt.db; created if missing)
   --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)
@@ -62,8 +68,8 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
   --max-job-iterations N per-job iteration cap, 1..1e9 (default 100000)
   --max-job-memory-mb MB a job whose estimated peak memory exceeds it is rejected,
                          [16, 1048576] (default 4096)
-  --max-queued-jobs N    queued jobs per sender (the authenticated key; all unauthenticated
-                         clients share one quota), 1..1e6 (default 100)
+  --max-queued-jobs N    queued jobs per sender (the authenticated key, or for unauthenticated
+                         clients the sending host), 1..1e6 (default 100)
   --max-queued-hours H   estimated hours of queued jobs per sender, (0, 1e6] (default 168)
   --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
   --executor E           local (default: the workers compute the jobs) or slurm (each worker

@@ -138,6 +138,13 @@ void WorkerJobContext::flush_progress() {
   publish(last);
 }
 
+void WorkerJobContext::publish_notice(const std::string& message) {
+  std::lock_guard lock(progress_mutex_);
+  service::ProgressReport r = last_report_;  // the job's progress as it stands, saying `message`
+  r.message = message;
+  publish(r);
+}
+
 void WorkerJobContext::finish_progress(storage::JobState state) {
   std::lock_guard lock(progress_mutex_);
   service::ProgressReport r = last_report_;

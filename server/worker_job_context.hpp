@@ -53,6 +53,8 @@ class WorkerJobContext final : public service::JobContext {
   // The job ended in `state`: publishes and stores its last progress (100 % if it ran to its
   // end) with the state as phase.
   void finish_progress(storage::JobState state);
+  // Publishes a progress message that says only `message` (what the worker does about a fault).
+  void publish_notice(const std::string& message);
   double elapsed_seconds() const;
   // This attempt's seconds not yet added to the store's run_seconds.
   double unrecorded_seconds() {

@@ -36,11 +36,13 @@ WorkerPool::WorkerPool(const ServerConfig& config, const service::JobKindRegistr
                        storage::ResultStore& store, LcmPublisher& publisher)
     : config_(config), kinds_(kinds), executor_(executor), store_(store), publisher_(publisher) {
   for (int i = 0; i < effective_workers(config); ++i) threads_.emplace_back([this] { work(); });
+  watchdog_ = std::thread([this] { watch_for_orphans(); });
 }
 
 WorkerPool::~WorkerPool() {
   stop();
   for (auto& t : threads_) t.join();
+  watchdog_.join();
 }
 
 storage::SubmitOutcome WorkerPool::submit(const storage::Submission& submission, const storage::SenderQuota& quota,
@@ -82,6 +84,7 @@ std::optional<WorkerPool::Claimed> WorkerPool::claim() {
   std::optional<storage::JobRecord> job = store_.claim_next();
   if (!job) return std::nullopt;
   Claimed c{std::move(*job), nullptr};
+  live_.insert(c.job.id);
   if (const auto it = parsed_.find(c.job.id); it != parsed_.end()) {
     c.spec = std::move(it->second);
     parsed_.erase(it);
@@ -103,6 +106,64 @@ void WorkerPool::work() {
       continue;
     }
     run_job(claimed->job, std::move(claimed->spec));
+    release(claimed->job.id);
+  }
+}
+
+void WorkerPool::release(std::int64_t job_id) {
+  std::lock_guard queue(queue_mutex_);
+  live_.erase(job_id);
+}
+
+void WorkerPool::watch_for_orphans() {
+  std::unique_lock lock(mutex_);
+  while (!wake_.wait_for(lock, kOrphanCheckPeriod, [this] { return shutdown_.load(); })) {
+    lock.unlock();
+    requeue_orphans();
+    lock.lock();
+  }
+}
+
+void WorkerPool::requeue_orphans() {
+  storage::RecoverySummary found;
+  try {
+    std::lock_guard queue(queue_mutex_);  // a claim is in live_ by the time this lock is free
+    found = store_.recover_interrupted(live_, "running without a worker (found by the server's periodic check)");
+  } catch (const storage::StorageError&) {
+    return;  // a full disk: the next check tries again
+  }
+  if (found.requeued + found.cancelled == 0) return;
+  std::fprintf(stderr, "cycloptd: %d running job(s) without a worker re-queued, %d cancelled as requested\n",
+               found.requeued, found.cancelled);
+  wake_.notify_all();
+}
+
+bool WorkerPool::record_state(const storage::JobRecord& job, WorkerJobContext& ctx, const std::function<void()>& write) {
+  auto wait = std::chrono::duration_cast<std::chrono::steady_clock::duration>(kFirstRetry);
+  bool retrying = false;
+  for (;;) {
+    try {
+      write();
+      if (retrying) std::fprintf(stderr, "cycloptd: job %lld: its state is recorded again\n", static_cast<long long>(job.id));
+      return true;
+    } catch (const storage::StorageError& e) {
+      pause_claims();
+      if (!retrying) {
+        const std::string notice = "cannot record the job's state (" + std::string(e.what()) +
+                                   "); retrying until the database accepts it - the job resumes by itself when "
+                                   "there is room again";
+        std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job.id), notice.c_str());
+        ctx.publish_notice(notice);
+        retrying = true;
+      }
+    }
+    std::unique_lock lock(mutex_);
+    if (wake_.wait_for(lock, wait, [this] { return shutdown_.load(); })) {
+      std::fprintf(stderr, "cycloptd: job %lld: shut down before its state could be recorded; the next start re-queues it\n",
+                   static_cast<long long>(job.id));
+      return false;
+    }
+    wait = std::min(2 * wait, std::chrono::duration_cast<std::chrono::steady_clock::duration>(kMaxRetry));
   }
 }
 
@@ -147,24 +208,25 @@ void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const se
                   : "limits.max_iterations: exceeded " + std::to_string(ctx.limits().max_iterations);
     }
   }
-  try {
-    if (stop == service::StopReason::shutdown && error.empty()) {
-      store_.return_to_queue(job.id, ctx.unrecorded_seconds(), ctx.publish_seconds(), "server shutdown; resumes at next start");
-      return;
-    }
+  const double run_seconds = ctx.unrecorded_seconds();
+  if (stop == service::StopReason::shutdown && error.empty()) {
+    record_state(job, ctx, [&] {
+      store_.return_to_queue(job.id, run_seconds, ctx.publish_seconds(), "server shutdown; resumes at next start");
+    });
+    return;
+  }
+  const bool recorded = record_state(job, ctx, [&] {
     if (state == storage::JobState::done) {  // ran to its end: judged by what it stored
       outcome = storage::judge_job_outcome(store_.required_points(job.id), store_.job(job.id)->points_total);
       state = outcome->state;
       error = outcome->summary;
     }
-    store_.finish(job.id, state, error, ctx.unrecorded_seconds(), ctx.publish_seconds(),
+    store_.finish(job.id, state, error, run_seconds, ctx.publish_seconds(),
                   outcome ? std::optional<int>(outcome->converged) : std::nullopt);
-  } catch (const storage::StorageError& e) {
-    // The row still says running: the next start re-queues it (recover_interrupted).
-    pause_claims();
+  });
+  if (!recorded) {
     publish_done(job, ctx, storage::JobState::queued,
-                 "could not record the end of the job (" + std::string(e.what()) +
-                     "); it stays in the database as interrupted and is re-queued when the server restarts");
+                 "the server stopped before it could record the end of the job; it is re-queued at the next start");
     return;
   }
   publish_done(job, ctx, state, error, outcome);
@@ -172,15 +234,15 @@ void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const se
 
 void WorkerPool::requeue_after_store_failure(const storage::JobRecord& job, WorkerJobContext& ctx) {
   pause_claims();
-  std::string told = "could not store a point (" + ctx.store_error() + "); ";
-  try {
-    store_.return_to_queue(job.id, ctx.unrecorded_seconds(), ctx.publish_seconds(), "could not store: " + ctx.store_error());
-    told += "the job is re-queued and resumes from its stored points";
-  } catch (const storage::StorageError& e) {
-    told += "re-queueing failed too (" + std::string(e.what()) + "); it is re-queued when the server restarts";
-  }
-  std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job.id), told.c_str());
-  publish_done(job, ctx, storage::JobState::queued, told);
+  const std::string why = "could not store a point (" + ctx.store_error() + ")";
+  std::fprintf(stderr, "cycloptd: job %lld: %s\n", static_cast<long long>(job.id), why.c_str());
+  const double run_seconds = ctx.unrecorded_seconds();
+  const bool requeued = record_state(job, ctx, [&] {
+    store_.return_to_queue(job.id, run_seconds, ctx.publish_seconds(), "could not store: " + ctx.store_error());
+  });
+  publish_done(job, ctx, storage::JobState::queued,
+               why + (requeued ? "; the job is re-queued and resumes from its stored points"
+                               : "; the server stopped before it could re-queue the job; the next start does"));
 }
 
 void WorkerPool::pause_claims() {

@@ -149,3 +149,35 @@ TEST(Continuation, StopsAtTheMinimalStepWhereTheCorrectorKeepsFailing) {
     EXPECT_LT(r.points.size(), 60u);
   }
 }
+
+// A run resumed from where it stood after any converged point (RunState, as a crashed sweep's
+// journal holds it) computes the same points as the run that was not interrupted, bit for bit,
+// and solves only the points after that state (issue 57 item 2). Two grids: one the run reaches,
+// one where the corrector fails beyond p = 1.05 and the trust region shrinks to its minimum.
+TEST(Continuation, ResumedFromAnyConvergedPointGivesTheUninterruptedRun) {
+  for (const std::vector<double>& grid : {std::vector<double>{0.0, 0.35, 0.7, 1.0}, std::vector<double>{0.8, 1.1}})
+    for (const Predictor predictor : {Predictor::qp, Predictor::trivial, Predictor::trivial_then_qp}) {
+      ContinuationOptions o;
+      o.predictor = predictor;
+      std::vector<RunState> states;
+      const ContinuationResult whole =
+          continue_solution(shifted, Eigen::VectorXd::Zero(1), grid, o, {}, {}, [&](const RunState& s) { states.push_back(s); });
+      ASSERT_GE(states.size(), 2u);
+      for (const RunState& state : states) {
+        std::size_t solved = 0;
+        const ContinuationResult resumed =
+            resume_solution(shifted, state, grid, o, [&](const CurvePoint&) { return ++solved, true; });
+        ASSERT_EQ(resumed.points.size(), whole.points.size());
+        EXPECT_EQ(solved, whole.points.size() - state.result.points.size());
+        for (std::size_t i = 0; i < whole.points.size(); ++i) {
+          EXPECT_EQ(resumed.points[i].parameter, whole.points[i].parameter) << i;
+          EXPECT_EQ(resumed.points[i].x, whole.points[i].x) << i;
+          EXPECT_EQ(resumed.points[i].converged, whole.points[i].converged) << i;
+          EXPECT_EQ(resumed.points[i].trust_region, whole.points[i].trust_region) << i;
+        }
+        EXPECT_EQ(resumed.finished, whole.finished);
+        EXPECT_EQ(resumed.message, whole.message);
+        EXPECT_EQ(resumed.corrector_iterations, whole.corrector_iterations);
+      }
+    }
+}

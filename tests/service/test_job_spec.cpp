@@ -116,6 +116,12 @@ TEST(JobSpec, ErrorsNameTheField) {
   EXPECT_EQ(field_of(with("/task", 3)), "task");
   EXPECT_EQ(field_of(with("/colour", "red")), "colour");
   EXPECT_EQ(field_of(with("/limits/max_wall_seconds", -1)), "limits.max_wall_seconds");
+  // The message names the range that is admitted: 0 is not (issue 57).
+  for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(0), nlohmann::json(1e6), nlohmann::json("60")}) {
+    const std::string m = failing_message([&] { validate_job_spec(with("/limits/max_wall_seconds", bad), kinds); });
+    EXPECT_NE(m.find("(0, 604800]"), std::string::npos) << m;
+    EXPECT_EQ(m.find("[0,"), std::string::npos) << m;
+  }
   EXPECT_EQ(field_of(with("/limits/max_iterations", 1.5)), "limits.max_iterations");
   EXPECT_EQ(field_of(with("/solver/solver", "newton")), "solver.solver");
   EXPECT_EQ(field_of(with("/objective", "speed")), "objective");

@@ -58,12 +58,8 @@ TEST_F(ServerAuth, UnsignedStaleAndForeignRequestsAreRejected) {
   ASSERT_TRUE(srv.authenticates());
   client::ServiceClient alice(lcm_, "", key("alice")), bob(lcm_, "", key("bob")), root(lcm_, "", key("root"));
 
-  // Unsigned (the fixture's client has no key): rejected naming the signature.
-  const auto unsigned_ack = client_.submit("anon-1", sweep(3, 0), 5.0);
-  ASSERT_TRUE(unsigned_ack);
-  EXPECT_FALSE(unsigned_ack->accepted);
-  EXPECT_EQ(unsigned_ack->field, "signature");
-  EXPECT_NE(unsigned_ack->problem.find("unsigned message"), std::string::npos) << unsigned_ack->problem;
+  // Unsigned (the fixture's client has no key): the fixed signature rejection.
+  EXPECT_THROW(client_.submit("anon-1", sweep(3, 0), 5.0), client::SignatureRejected);
 
   // Signed by alice: accepted; bob may not cancel it, an admin key may.
   const auto ack = alice.submit("alice-1", sweep(200, 20), 5.0);
@@ -92,7 +88,7 @@ TEST_F(ServerAuth, UnsignedStaleAndForeignRequestsAreRejected) {
   const auto stale_ack = client_.send_raw(channels::kSubmit, stale, "alice-3", 5.0);
   ASSERT_TRUE(stale_ack);
   EXPECT_FALSE(stale_ack->accepted);
-  EXPECT_NE(stale_ack->problem.find("stale timestamp"), std::string::npos) << stale_ack->problem;
+  EXPECT_EQ(stale_ack->problem, channels::kSignatureRejected);
   const std::string fresh = payload + wire::signature_trailer(key("alice"), channels::kSubmit, wire::as_bytes(payload),
                                                                m.request_id, wire::unix_now_us());
   const auto first = client_.send_raw(channels::kSubmit, fresh, "alice-3", 5.0);
@@ -108,7 +104,7 @@ TEST_F(ServerAuth, UnsignedStaleAndForeignRequestsAreRejected) {
                                                                 "alice-4", wire::unix_now_us());
   const auto forged_ack = client_.send_raw(channels::kSubmit, forged, "alice-3", 5.0);
   ASSERT_TRUE(forged_ack);
-  EXPECT_NE(forged_ack->problem.find("bad signature"), std::string::npos) << forged_ack->problem;
+  EXPECT_EQ(forged_ack->problem, channels::kSignatureRejected);
   EXPECT_EQ(srv.counters().unauthenticated, 3);
 }
 
@@ -140,6 +136,62 @@ TEST_F(ServerAuth, ClientsBelieveOnlyMessagesSignedWithTheirKey) {
   EXPECT_EQ(forged_progress, 0);
   EXPECT_GT(real_progress, 0);
   EXPECT_GE(alice.unverified_received(), 5);
+}
+
+// A client whose key the server does not know, or whose secret is wrong, is told so (the fixed,
+// unsigned rejection) instead of waiting for an answer that never comes - for submissions and
+// for reads alike; the rejection carries nothing but its fixed text.
+TEST_F(ServerAuth, WrongKeyOrSecretIsToldSignatureRejected) {
+  server::Server srv(config_, kinds_, lcm_);
+  client::ServiceClient stranger(lcm_, "", wire::AuthKey{"mallory", "mallory-secret-0123456789", false});
+  wire::AuthKey wrong = key("alice");
+  wrong.secret = "not-alices-secret-at-all";
+  client::ServiceClient misconfigured(lcm_, "", wrong);
+  for (client::ServiceClient* c : {&stranger, &misconfigured}) {
+    try {
+      c->submit(client::new_request_id(), sweep(3, 0), 5.0);
+      ADD_FAILURE() << "a submission with a wrong key or secret was not rejected";
+    } catch (const client::SignatureRejected& e) {
+      EXPECT_STREQ(e.what(), "signature rejected (unknown key or wrong secret)");
+    }
+    EXPECT_THROW(c->query(storage::query_for("jobs"), 5.0), client::SignatureRejected);
+  }
+  EXPECT_EQ(srv.store().count_jobs(std::nullopt), 0);
+}
+
+// Under authentication a key reads its own jobs and an admin key every job; "auth_reads": "any"
+// lets every key read every job. Cancel stays the owner's either way.
+TEST_F(ServerAuth, ReadsAreTheOwnersUnlessConfiguredForAnyKey) {
+  for (const server::AuthReads reads : {server::AuthReads::owner, server::AuthReads::any}) {
+    config_.auth_reads = reads;
+    std::filesystem::remove(config_.database);
+    server::Server srv(config_, kinds_, lcm_);
+    client::ServiceClient alice(lcm_, "", key("alice")), bob(lcm_, "", key("bob")), root(lcm_, "", key("root"));
+    const auto a = alice.submit(client::new_request_id(), sweep(3, 0), 5.0);
+    const auto b = bob.submit(client::new_request_id(), sweep(3, 0), 5.0);
+    ASSERT_TRUE(a && a->accepted && b && b->accepted);
+    ASSERT_TRUE(alice.watch(a->job_id, [](const auto&) {}, 30.0));
+    EXPECT_EQ(alice.query(storage::query_for("jobs"), 5.0)->total, reads == server::AuthReads::owner ? 1 : 2);
+    EXPECT_EQ(root.query(storage::query_for("jobs"), 5.0)->total, 2);
+    EXPECT_EQ(alice.query(storage::query_for("solutions", a->job_id), 5.0)->rows.size(), 3u);
+    EXPECT_EQ(root.query(storage::query_for("solutions", a->job_id), 5.0)->rows.size(), 3u);
+    for (const char* what : {"job", "solutions", "events", "curves", "trajectories"}) {
+      if (reads == server::AuthReads::owner) {
+        try {
+          bob.query(storage::query_for(what, a->job_id), 5.0);
+          ADD_FAILURE() << "bob read alice's " << what;
+        } catch (const client::QueryError& e) {
+          EXPECT_NE(std::string(e.what()).find("only its submitter's key or an admin key may read it"), std::string::npos)
+              << e.what();
+        }
+      } else {
+        EXPECT_TRUE(bob.query(storage::query_for(what, a->job_id), 5.0)) << what;
+      }
+    }
+    const auto by_bob = bob.cancel(a->job_id, 5.0);
+    ASSERT_TRUE(by_bob);
+    EXPECT_FALSE(by_bob->accepted);
+  }
 }
 
 }  // namespace

@@ -240,6 +240,72 @@ TEST_F(ServerMemq, FullDiskRequeuesTheJobTellsItsWatchersAndKeepsItsPoints) {
   EXPECT_EQ(srv.store().job(ack.job_id)->points_stored, 400);
 }
 
+// A store that refuses every write (PRAGMA query_only: the injected form of a full disk that also
+// has no room for the state change): the point fails, re-queueing fails too. The job must not stay
+// `running` without a worker: its worker retries the state change, says so on LCM, and once writes
+// succeed again the job resumes by itself within 10 s (issue 57, acceptance 1).
+TEST_F(ServerMemq, JobWhoseStateCannotBeWrittenIsRetriedAndResumesWithinTenSeconds) {
+  config_.workers = 1;
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("no-writes", sweep(200, 5));
+  while (srv.store().job(ack.job_id)->points_stored < 5) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  auto set_query_only = [&](bool on) {
+    std::lock_guard lock(srv.store().mutex());
+    srv.store().connection().exec(std::string("PRAGMA query_only = ") + (on ? "1" : "0"));
+  };
+  set_query_only(true);
+  std::string notice;
+  const auto early = client_.watch(ack.job_id, [&](const cyclopt_lcm::job_progress_t& p) {
+    if (p.message.find("cannot record") != std::string::npos) notice = p.message;
+  }, 3.0);
+  EXPECT_FALSE(early) << "the job ended while nothing could be written: " << early->state << " " << early->error;
+  EXPECT_NE(notice.find("retrying"), std::string::npos) << "progress said '" << notice << "'";
+  EXPECT_EQ(srv.store().job(ack.job_id)->attempts, 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  set_query_only(false);  // space again
+  double resumed_after = -1.0;
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(15)) {
+    const auto j = srv.store().job(ack.job_id);
+    if (j->attempts >= 2 || storage::is_final(j->state)) {
+      resumed_after = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::printf("resumed %.2f s after writes were possible again\n", resumed_after);
+  ASSERT_GE(resumed_after, 0.0) << "the job did not resume within 15 s";
+  EXPECT_LE(resumed_after, 10.0);
+  auto done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
+  ASSERT_TRUE(done);
+  if (done->state == "queued") {  // the done message of the re-queueing, once it could be recorded
+    EXPECT_NE(done->error.find("re-queued"), std::string::npos) << done->error;
+    done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
+    ASSERT_TRUE(done);
+  }
+  EXPECT_EQ(done->state, "done") << done->error;
+  EXPECT_EQ(srv.store().job(ack.job_id)->points_stored, 200);
+}
+
+// A row left `running` with no worker behind it (however it came about) is re-queued by the
+// server's periodic check, and runs.
+TEST_F(ServerMemq, RunningJobWithoutAWorkerIsRequeued) {
+  config_.workers = 1;
+  server::Server srv(config_, kinds_, lcm_);
+  const auto ack = submit("orphan-source", sweep(3, 0));
+  ASSERT_TRUE(client_.watch(ack.job_id, [](const auto&) {}, 30.0));
+  {
+    std::lock_guard lock(srv.store().mutex());
+    srv.store().connection().exec("UPDATE jobs SET state = 'running' WHERE id = " + std::to_string(ack.job_id));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  while (srv.store().job(ack.job_id)->state == storage::JobState::running &&
+         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(15))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const auto j = srv.store().job(ack.job_id);
+  EXPECT_NE(j->state, storage::JobState::running) << "still running without a worker after 15 s";
+  EXPECT_EQ(j->points_stored, 3);
+}
+
 // Cancel and the wall-time limit inside long solver work (a walker sweep's multistart): both
 // take effect within 1 s on an idle machine (measured 0.004 s and 0.003 s overshoot, 2026-12-02).
 // 5 s allowed here: at load 4-13 on 2 cores (other builds beside the suite) the starved worker

@@ -48,8 +48,21 @@ struct MemoryJournal {
       texts["run/" + std::to_string(n)] = jobs::run_to_json(r).dump();
       ++recorded;
     };
+    if (!with_run_states) return j;
+    j.find_run_state = [this](int n) -> std::optional<continuation::RunState> {
+      const auto it = texts.find("run_state/" + std::to_string(n));
+      if (it == texts.end() || texts.count("run/" + std::to_string(n))) return std::nullopt;
+      ++states_found;
+      return jobs::run_state_from_json(nlohmann::json::parse(it->second));
+    };
+    j.record_run_state = [this](int n, const continuation::RunState& r) {
+      const std::lock_guard lock(mutex);
+      texts["run_state/" + std::to_string(n)] = jobs::run_state_to_json(r).dump();
+    };
     return j;
   }
+  bool with_run_states = true;
+  int states_found = 0;  // unfinished runs found with a state
 };
 
 struct SweepCase {
@@ -139,4 +152,38 @@ TEST(SweepResume, CheckpointTextsRoundTripEveryField) {
   nlohmann::json bad = jobs::summary_to_json(s);
   bad["termination"] = "no_such_end";
   EXPECT_THROW(jobs::summary_from_json(bad), records::RecordError);
+}
+
+// An attempt stopped in the middle of a continuation run leaves where the run stood after its last
+// converged point (run_state/<n>, issue 57): the next attempt goes on from there - it spends fewer
+// solver iterations than an attempt without run states, the rest of its work being the same - and
+// selects the uninterrupted sweep's points, bit for bit.
+TEST(SweepResume, AnInterruptedRunGoesOnFromItsLastConvergedPoint) {
+  const SweepCase c;
+  const SpeedSweepResult whole = speed_sweep(c.model, c.problem, c.options);
+  int total_points = 0;
+  for (const continuation::ContinuationResult& run : whole.runs) total_points += static_cast<int>(run.points.size());
+  long iterations[2] = {0, 0};  // of the resumed attempt: without, with run states
+  for (const bool states : {false, true}) {
+    MemoryJournal memory;
+    memory.with_run_states = states;
+    SpeedSweepOptions o = c.options;
+    o.journal = memory.journal();
+    int reported = 0;
+    // Stopped at the middle point: inside a run (the seed multistart's points come first).
+    speed_sweep(c.model, c.problem, o, [&](const continuation::CurvePoint&) { return ++reported < total_points / 2; });
+    SpeedSweepOptions counted = o;
+    counted.continuation.corrector.on_iteration = [&](const nlp::IterationReport&) {
+      ++iterations[states];
+      return true;
+    };
+    const SpeedSweepResult resumed = speed_sweep(c.model, c.problem, counted);
+    if (states) {
+      EXPECT_GT(memory.states_found, 0);
+    }
+    expect_same_best(whole, resumed);
+  }
+  std::printf("solver iterations of the resumed attempt: %ld resuming the run from its start, %ld from its last point\n",
+              iterations[0], iterations[1]);
+  EXPECT_LT(iterations[1], iterations[0]);
 }

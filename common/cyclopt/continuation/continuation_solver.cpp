@@ -30,8 +30,9 @@ void check_parameters(const std::vector<double>& p) {
 class Run {
  public:
   Run(const ParametricProblem& family, const std::vector<double>& grid, const ContinuationOptions& o,
-      const CurveStart& start, const PointCallback& on_point)
-      : family_(family), grid_(grid), o_(o), on_point_(on_point), curve_(start.curve_id), next_curve_(start.next_curve_id) {
+      const CurveStart& start, const PointCallback& on_point, const StateCallback& on_state)
+      : family_(family), grid_(grid), o_(o), on_point_(on_point), on_state_(on_state), curve_(start.curve_id),
+        next_curve_(start.next_curve_id) {
     double max_spacing = 0.0;
     for (std::size_t i = 1; i < grid.size(); ++i) max_spacing = std::max(max_spacing, std::abs(grid[i] - grid[i - 1]));
     // Table 7.1: Delta_1 = |p_2 - p_1|, Delta_max = max |p_{k+1} - p_k|.
@@ -47,8 +48,19 @@ class Run {
   }
 
   ContinuationResult run(const VectorXd& x0);
+  ContinuationResult resume(const RunState& state);
 
  private:
+  ContinuationResult steps(Clock::time_point start);  // steps 2-19 from x_k on
+  void take_point(const CurvePoint& point) {  // a converged point the run goes on from: x_k
+    x_k_ = point.x;
+    f_k_ = point.objective;
+    solve_k_ = point.corrector;
+    p_ = point.parameter;
+  }
+  void report_state() const {
+    if (on_state_) on_state_({result_, curve_, l_, tried_value_, secant_, trust_});
+  }
   // `previous`: the corrector's solve at the last point (absent for the first point).
   // difference_start: without W, the SQP starts from W_1 of (6.24) on differences, not from I.
   nlp::SolverSummary correct(double p, const VectorXd& x_start, const std::optional<MatrixXd>& W,
@@ -84,10 +96,19 @@ class Run {
   const std::vector<double>& grid_;
   const ContinuationOptions& o_;
   const PointCallback& on_point_;
+  const StateCallback& on_state_;
   QpPredictorSettings settings_;
   ContinuationResult result_;
   int curve_, next_curve_;
   double trust_ = 0.0, max_trust_ = 0.0;
+  // Where the run stands (RunState): the last converged point and the next requested value.
+  VectorXd x_k_;
+  double f_k_ = 0.0;
+  nlp::SolverSummary solve_k_;  // at x_k
+  double p_ = 0.0;
+  std::size_t l_ = 1;
+  std::optional<double> secant_;  // of the last step on the current curve
+  std::size_t tried_value_ = 0;   // trivial_then_qp: the requested value l whose direct step was tried
 };
 
 ContinuationResult Run::run(const VectorXd& x0) {
@@ -106,9 +127,7 @@ ContinuationResult Run::run(const VectorXd& x0) {
   first.x = first.corrector.x;
   first.objective = first.corrector.objective;
   first.seconds = seconds_since(start);
-  VectorXd x_k = first.x;
-  double f_k = first.objective;
-  nlp::SolverSummary solve_k = first.corrector;  // at x_k
+  take_point(first);
   const bool first_ok = first.converged;
   if (!emit(std::move(first)) || !first_ok) {
     const bool stopped = first_ok || result_.points.back().corrector.termination == nlp::Termination::user_stop;
@@ -117,13 +136,35 @@ ContinuationResult Run::run(const VectorXd& x0) {
     result_.seconds = seconds_since(start);
     return std::move(result_);
   }
-  double p = grid_[0];
-  std::size_t l = 1;
-  std::optional<double> secant;  // of the last step on the current curve
+  result_.next_curve_id = next_curve_;
+  report_state();
+  return steps(start);
+}
+
+ContinuationResult Run::resume(const RunState& state) {
+  const Clock::time_point start = Clock::now();
+  result_ = state.result;
+  curve_ = state.curve_id;
+  next_curve_ = state.result.next_curve_id;
+  take_point(result_.points.back());
+  l_ = state.next_value;
+  tried_value_ = state.tried_value;
+  secant_ = state.secant;
+  trust_ = state.trust_region;
+  return steps(start);
+}
+
+ContinuationResult Run::steps(Clock::time_point start) {
+  VectorXd& x_k = x_k_;
+  double& f_k = f_k_;
+  nlp::SolverSummary& solve_k = solve_k_;
+  double& p = p_;
+  std::size_t& l = l_;
+  std::optional<double>& secant = secant_;
+  std::size_t& tried_value = tried_value_;
   double trivial_step = 0.0;     // > 0: shortened after a failed corrector
   const bool uses_qp = o_.predictor != Predictor::trivial;
   const bool to_each_value = uses_qp || o_.fixed_step == 0.0;
-  std::size_t tried_value = 0;  // trivial_then_qp: the requested value l whose direct step was tried
   std::optional<MatrixXd> W1_at_k;  // reuse_predictor_hessian: the predictor's W_1 at x_k
   for (;;) {
     const Clock::time_point t0 = Clock::now();
@@ -228,6 +269,8 @@ ContinuationResult Run::run(const VectorXd& x0) {
       break;
     }
     if (to_each_value && p == target) ++l;
+    result_.next_curve_id = next_curve_;
+    report_state();
   }
   result_.next_curve_id = next_curve_;
   result_.seconds = seconds_since(start);
@@ -237,10 +280,22 @@ ContinuationResult Run::run(const VectorXd& x0) {
 }  // namespace
 
 ContinuationResult continue_solution(const ParametricProblem& family, const VectorXd& x0, const std::vector<double>& parameters,
-                                     const ContinuationOptions& options, const CurveStart& start, const PointCallback& on_point) {
+                                     const ContinuationOptions& options, const CurveStart& start, const PointCallback& on_point,
+                                     const StateCallback& on_state) {
   validate(options);
   check_parameters(parameters);
-  return Run(family, parameters, options, start, on_point).run(x0);
+  return Run(family, parameters, options, start, on_point, on_state).run(x0);
+}
+
+ContinuationResult resume_solution(const ParametricProblem& family, const RunState& state,
+                                   const std::vector<double>& parameters, const ContinuationOptions& options,
+                                   const PointCallback& on_point, const StateCallback& on_state) {
+  validate(options);
+  check_parameters(parameters);
+  if (state.result.points.empty() || !state.result.points.back().converged || state.next_value < 1 ||
+      state.next_value >= parameters.size())
+    throw std::invalid_argument("resume_solution: the state does not end at a converged point before the last value");
+  return Run(family, parameters, options, {state.curve_id, state.result.next_curve_id}, on_point, on_state).resume(state);
 }
 
 }  // namespace cyclopt::continuation

@@ -32,11 +32,19 @@ struct CurveStart {
 
 // Called with every point as soon as it is solved; returning false stops the run.
 using PointCallback = std::function<bool(const CurvePoint&)>;
+// Called after every converged point the run goes on from, with where it stands (solution_curve.hpp).
+using StateCallback = std::function<void(const RunState&)>;
 
 // parameters: p_0 (where x0 is solved first, step 1), then p_1..p_Q, strictly monotone (either
 // direction). Throws std::invalid_argument for invalid options or parameters.
 ContinuationResult continue_solution(const ParametricProblem& family, const Eigen::VectorXd& x0,
                                      const std::vector<double>& parameters, const ContinuationOptions& options,
-                                     const CurveStart& start = {}, const PointCallback& on_point = {});
+                                     const CurveStart& start = {}, const PointCallback& on_point = {},
+                                     const StateCallback& on_state = {});
+// The same run resumed from `state` (an on_state of an earlier call with the same family, x0,
+// parameters, options and start): its points so far are not solved or passed to on_point again.
+ContinuationResult resume_solution(const ParametricProblem& family, const RunState& state,
+                                   const std::vector<double>& parameters, const ContinuationOptions& options,
+                                   const PointCallback& on_point = {}, const StateCallback& on_state = {});
 
 }  // namespace cyclopt::continuation

@@ -3,7 +3,9 @@
 // curve it lies on, and the jumps between curves it detected (reported, never hidden).
 #include "cyclopt/nlp/solver_options.hpp"
 #include <Eigen/Core>
+#include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,18 @@ struct ContinuationResult {
   double seconds = 0.0;
 };
 
+// Where a run stands after a converged point (the last of result.points): everything Algorithm 2
+// carries to its next step, so that continue_solution resumed from it computes the same steps, bit
+// for bit, as the run that was not interrupted (a run resumed after a crash, studies/sweep_journal.hpp).
+struct RunState {
+  ContinuationResult result;     // so far; result.next_curve_id: the id the next jump gets
+  int curve_id = 0;              // of the last point
+  std::size_t next_value = 1;    // l: the requested value p_l the run steps towards
+  std::size_t tried_value = 0;   // Predictor::trivial_then_qp: the last value whose direct step was tried
+  std::optional<double> secant;  // of the last step on the current curve
+  double trust_region = 0.0;     // Delta_k for the next step
+};
+
 // Gives the curves `run` jumped to - numbered from `from` on, its CurveStart::next_curve_id - the
 // ids from `to` on: for a run computed before the id of its first new curve was known (a sweep's
 // downward run computed beside the upward one, studies/speed_sweep.cpp). Ids below `from` stay.
@@ -57,6 +71,11 @@ inline void renumber_new_curves(ContinuationResult& run, int from, int to) {
     renumber(j.to_curve);
   }
   renumber(run.next_curve_id);
+}
+
+inline void renumber_new_curves(RunState& state, int from, int to) {
+  renumber_new_curves(state.result, from, to);
+  if (state.curve_id >= from) state.curve_id = to + (state.curve_id - from);
 }
 
 }  // namespace cyclopt::continuation

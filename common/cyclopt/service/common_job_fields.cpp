@@ -4,6 +4,7 @@
 #include "cyclopt/service/spec_fields.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cyclopt::service {
 
@@ -33,9 +34,14 @@ RequestedLimits parse_limits(const nlohmann::json& spec) {
   if (!spec.contains("limits")) return r;
   const nlohmann::json& l = object_value(spec["limits"], "limits");
   reject_unknown_keys(l, "limits", kLimitFields);
-  r.max_wall_seconds = optional_number(l, "limits", "max_wall_seconds", 0.0, kMaxWallSeconds);
-  if (r.max_wall_seconds && *r.max_wall_seconds <= 0.0)
-    throw SpecError("limits.max_wall_seconds", "must be in (0, 604800], got 0");
+  if (l.contains("max_wall_seconds")) {  // (0, 604800]: a limit of 0 s would end the job before it began
+    const nlohmann::json& v = l["max_wall_seconds"];
+    const double x = v.is_number() ? v.get<double>() : 0.0;
+    if (!v.is_number() || !std::isfinite(x) || !(x > 0.0) || x > kMaxWallSeconds)
+      throw SpecError("limits.max_wall_seconds", "must be a number in (0, " + std::to_string(static_cast<int>(kMaxWallSeconds)) +
+                                                     "] seconds, got " + v.dump());
+    r.max_wall_seconds = x;
+  }
   r.max_iterations = optional_integer(l, "limits", "max_iterations", 1, kMaxIterationLimit);
   return r;
 }

@@ -214,8 +214,8 @@ QueryPage run_query(ResultStore& store, const QueryRequest& r) {
       if (!state)
         throw std::invalid_argument("state: '" + r.state + "' is not one of queued, running, done, failed, cancelled");
     }
-    page.total = store.count_jobs(state);
-    for (const JobRecord& j : store.jobs(state, r.offset, r.limit)) page.rows.push_back(to_json(j, false));
+    page.total = store.count_jobs(state, r.sender);
+    for (const JobRecord& j : store.jobs(state, r.offset, r.limit, r.sender)) page.rows.push_back(to_json(j, false));
     return page;
   }
   if (r.what == "job") {

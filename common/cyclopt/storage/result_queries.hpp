@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace cyclopt::storage {
@@ -18,6 +19,7 @@ struct QueryRequest {
   std::string state;          // filter for "jobs"; empty = all
   int offset = 0;
   int limit = 100;
+  std::optional<std::string> sender;  // filter for "jobs": only those this sender submitted (Submission::sender)
 };
 
 // All rows (from offset 0) of `what` for a job, or of the jobs in `state`.

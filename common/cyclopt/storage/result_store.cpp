@@ -241,7 +241,7 @@ std::optional<JobRecord> ResultStore::claim_next() {
   return r;
 }
 
-RecoverySummary ResultStore::recover_interrupted() {
+RecoverySummary ResultStore::recover_interrupted(const std::set<std::int64_t>& live, const std::string& why) {
   std::lock_guard lock(mutex_);
   Transaction tx(db_);
   RecoverySummary s;
@@ -251,11 +251,12 @@ RecoverySummary ResultStore::recover_interrupted() {
     while (q.step()) running.emplace_back(q.int64(0), q.int64(1) != 0);
   }
   for (const auto& [id, cancel] : running) {
+    if (live.count(id)) continue;
     if (cancel)
       Statement(db_, "UPDATE jobs SET state = 'cancelled', finished_at = ? WHERE id = ?").bind(1, unix_now()).bind(2, id).run();
     else
       Statement(db_, "UPDATE jobs SET state = 'queued', started_at = NULL WHERE id = ?").bind(1, id).run();
-    add_event_locked(id, cancel ? "cancelled" : "requeued", "interrupted while running (server restart)");
+    add_event_locked(id, cancel ? "cancelled" : "requeued", why);
     ++(cancel ? s.cancelled : s.requeued);
   }
   tx.commit();
@@ -460,27 +461,37 @@ std::optional<JobRecord> ResultStore::job(std::int64_t job_id) {
   return read_job(q);
 }
 
-std::vector<JobRecord> ResultStore::jobs(std::optional<JobState> state, int offset, int limit) {
+std::vector<JobRecord> ResultStore::jobs(std::optional<JobState> state, int offset, int limit,
+                                         const std::optional<std::string>& sender) {
   std::lock_guard lock(mutex_);
   Statement q(db_, std::string("SELECT ") + kJobColumns +
-                       " FROM jobs j WHERE (?1 IS NULL OR j.state = ?1) ORDER BY j.id LIMIT ?2 OFFSET ?3");
+                       " FROM jobs j WHERE (?1 IS NULL OR j.state = ?1) AND (?4 IS NULL OR j.sender = ?4) "
+                       "ORDER BY j.id LIMIT ?2 OFFSET ?3");
   if (state)
     q.bind(1, to_string(*state));
   else
     q.bind(1, std::nullopt);
   q.bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
+  if (sender)
+    q.bind(4, *sender);
+  else
+    q.bind(4, std::nullopt);
   std::vector<JobRecord> out;
   while (q.step()) out.push_back(read_job(q));
   return out;
 }
 
-int ResultStore::count_jobs(std::optional<JobState> state) {
+int ResultStore::count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender) {
   std::lock_guard lock(mutex_);
-  Statement q(db_, "SELECT count(*) FROM jobs WHERE (?1 IS NULL OR state = ?1)");
+  Statement q(db_, "SELECT count(*) FROM jobs WHERE (?1 IS NULL OR state = ?1) AND (?2 IS NULL OR sender = ?2)");
   if (state)
     q.bind(1, to_string(*state));
   else
     q.bind(1, std::nullopt);
+  if (sender)
+    q.bind(2, *sender);
+  else
+    q.bind(2, std::nullopt);
   q.step();
   return static_cast<int>(q.int64(0));
 }

@@ -28,7 +28,8 @@ struct RequiredPoint {
 };
 
 // What a submission adds to the queue. sender identifies the submitter for the queue quota (the
-// authenticated key, or "" for unauthenticated clients, who then share one quota).
+// authenticated key, "host <address>" for an unauthenticated client whose address the server
+// knows, else "", one quota shared by all such clients).
 struct Submission {
   std::string request_id;
   std::string scene;
@@ -80,7 +81,10 @@ class ResultStore {
   SubmitOutcome submit(const std::string& request_id, const std::string& scene, const std::string& task,
                        const std::string& spec_json);
   std::optional<JobRecord> claim_next();  // oldest queued job -> running (attempts + 1)
-  RecoverySummary recover_interrupted();  // running -> queued, or cancelled if cancel was asked
+  // running -> queued, or cancelled if cancel was asked, except the jobs in `live` (those a worker
+  // of this server runs); `why` goes into each job's event.
+  RecoverySummary recover_interrupted(const std::set<std::int64_t>& live = {},
+                                      const std::string& why = "interrupted while running (server restart)");
   // run_seconds, publish_seconds: what this attempt adds to the job's totals (beyond what
   // add_run_seconds() already recorded). Both commit the state change before its event, and the
   // event only if the file has room for it, so a job's state can still be recorded on a full disk.
@@ -109,8 +113,10 @@ class ResultStore {
 
   // Reads.
   std::optional<JobRecord> job(std::int64_t job_id);
-  std::vector<JobRecord> jobs(std::optional<JobState> state, int offset, int limit);
-  int count_jobs(std::optional<JobState> state);
+  // sender: only the jobs it submitted (Submission::sender).
+  std::vector<JobRecord> jobs(std::optional<JobState> state, int offset, int limit,
+                              const std::optional<std::string>& sender = std::nullopt);
+  int count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender = std::nullopt);
   Connection& connection() { return db_; }  // for result_queries.hpp; lock with mutex()
   std::mutex& mutex() { return mutex_; }
 

@@ -188,6 +188,7 @@ FootDesignOptions one_at_a_time(const FootDesignOptions& o, std::mutex& m) {
       }
       j.record_solve = one_at_a_time(j.record_solve, m);
       j.record_run = one_at_a_time(j.record_run, m);
+      j.record_run_state = one_at_a_time(j.record_run_state, m);
       return j;
     };
   return s;

@@ -458,8 +458,27 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& g
   }
   ContinuationOptions continuation = o_.continuation;
   continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
-  o.run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, next_curve}, forward);
+  continuation::StateCallback record_state;
+  if (o_.journal.record_run_state)
+    record_state = [this, number](const continuation::RunState& s) { o_.journal.record_run_state(number, s); };
   o.computed = true;
+  std::optional<continuation::RunState> state = o_.journal.find_run_state ? o_.journal.find_run_state(number) : std::nullopt;
+  if (state && !state->result.points.empty() && state->result.points.back().converged) {
+    // An earlier attempt got this far: its points go through the callback as a recorded run's do,
+    // and the run goes on from its last converged point. A state recorded while the ids of the
+    // run's new curves were provisional (continue_both_ways) is renumbered from the id it began with.
+    const int began_with = state->result.next_curve_id - static_cast<int>(state->result.jumps.size());
+    if (began_with != next_curve) continuation::renumber_new_curves(*state, began_with, next_curve);
+    for (const CurvePoint& p : state->result.points)
+      if (!forward(p)) {  // the job stops, or the run ends where the uninterrupted one did not
+        o.run = std::move(state->result);
+        o.run.message = "stopped";
+        return o;
+      }
+    o.run = resume_solution(family_, *state, grid, continuation, forward, record_state);
+    return o;
+  }
+  o.run = continue_solution(family_, t.x, grid, continuation, {t.curve_id, next_curve}, forward, record_state);
   return o;
 }
 
@@ -527,7 +546,8 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   const int first = runs_begun_;
   const std::vector<double> up_grid = task_grid(up), down_grid = task_grid(down);
   std::optional<ContinuationResult> recorded_up = recorded_run(first), recorded_down = recorded_run(first + 1);
-  if (recorded_up || recorded_down) {
+  const bool begun = o_.journal.find_run_state && (o_.journal.find_run_state(first) || o_.journal.find_run_state(first + 1));
+  if (recorded_up || recorded_down || begun) {
     run_task(up, up_grid, std::move(recorded_up), queue);
     if (!stopped_) run_task(down, down_grid, std::move(recorded_down), queue);
     return;
@@ -908,6 +928,9 @@ SweepJournal search_journal(const SweepJournal& j, int k) {
     s.record_solve = [&j, offset](int batch, int start, const nlp::SolverSummary& run) { j.record_solve(batch + offset, start, run); };
   if (j.find_run) s.find_run = [&j, offset](int run) { return j.find_run(run + offset); };
   if (j.record_run) s.record_run = [&j, offset](int run, const ContinuationResult& r) { j.record_run(run + offset, r); };
+  if (j.find_run_state) s.find_run_state = [&j, offset](int run) { return j.find_run_state(run + offset); };
+  if (j.record_run_state)
+    s.record_run_state = [&j, offset](int run, const continuation::RunState& r) { j.record_run_state(run + offset, r); };
   return s;
 }
 

@@ -4,9 +4,11 @@
 // threads; a continuation run is sequential, and runs computed at once are numbered and taken in
 // as one after the other, speed_sweep.hpp), so in every attempt its n-th multistart batch and its n-th
 // continuation run are the same computation: they are keyed by sequence number. A run is recorded
-// once it ended on its own (not stopped by the job); a run interrupted by a crash is computed again
-// from its start, and its points already stored keep their keys. Multistart solves are recorded
-// one by one, so an interrupted batch repeats only the starts that had not finished.
+// once it ended on its own (not stopped by the job); while it runs, where it stands after each
+// converged point (continuation::RunState) is recorded too, so a run interrupted by a crash goes on
+// from its last such point (issue 57) and repeats at most the one predictor-corrector step that was
+// under way. Multistart solves are recorded one by one, so an interrupted batch repeats only the
+// starts that had not finished.
 // Empty functions: nothing is reused or recorded.
 
 #include "cyclopt/continuation/solution_curve.hpp"
@@ -24,6 +26,8 @@ struct SweepJournal {
   std::function<void(int batch, int start, const nlp::SolverSummary& run)> record_solve;
   std::function<std::optional<continuation::ContinuationResult>(int run)> find_run;
   std::function<void(int run, const continuation::ContinuationResult& result)> record_run;
+  std::function<std::optional<continuation::RunState>(int run)> find_run_state;
+  std::function<void(int run, const continuation::RunState& state)> record_run_state;
 };
 
 // Makes a multistart take the solves of batch `batch` that the journal holds instead of solving

@@ -58,6 +58,7 @@ std::string solve_key(int batch, int start) {
   return "solve/" + std::to_string(batch) + "/" + std::to_string(start);
 }
 std::string run_key(int run) { return "run/" + std::to_string(run); }
+std::string run_state_key(int run) { return "run_state/" + std::to_string(run); }
 
 json curve_point_to_json(const continuation::CurvePoint& p) {
   json j = continuation_step_record(p);
@@ -175,8 +176,29 @@ continuation::ContinuationResult run_from_json(const json& j) {
   return r;
 }
 
+json run_state_to_json(const continuation::RunState& s) {
+  json j = {{"run", run_to_json(s.result)},
+            {"curve_id", s.curve_id},
+            {"next_value", s.next_value},
+            {"tried_value", s.tried_value},
+            {"trust_region", s.trust_region}};
+  if (s.secant) j["secant"] = *s.secant;
+  return j;
+}
+
+continuation::RunState run_state_from_json(const json& j) {
+  continuation::RunState s;
+  s.result = run_from_json(j.at("run"));
+  s.curve_id = j.at("curve_id").get<int>();
+  s.next_value = j.at("next_value").get<std::size_t>();
+  s.tried_value = j.at("tried_value").get<std::size_t>();
+  s.trust_region = number(j.at("trust_region"));
+  if (j.contains("secant")) s.secant = number(j.at("secant"));
+  return s;
+}
+
 studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix) {
-  // Shared by the four functions; read once, when the sweep starts.
+  // Shared by the find functions; read once, when the sweep starts.
   const auto stored = std::make_shared<const std::map<std::string, std::string>>(ctx.stored_checkpoints());
   studies::SweepJournal j;
   j.find_solve = [stored, prefix](int batch, int start) {
@@ -188,6 +210,12 @@ studies::SweepJournal sweep_journal(JobContext& ctx, const std::string& prefix) 
   j.find_run = [stored, prefix](int run) { return find(*stored, prefix + run_key(run), run_from_json); };
   j.record_run = [&ctx, prefix](int run, const continuation::ContinuationResult& r) {
     ctx.store_checkpoint(prefix + run_key(run), run_to_json(r).dump());
+  };
+  j.find_run_state = [stored, prefix](int run) {
+    return find(*stored, prefix + run_state_key(run), run_state_from_json);
+  };
+  j.record_run_state = [&ctx, prefix](int run, const continuation::RunState& s) {
+    ctx.store_checkpoint(prefix + run_state_key(run), run_state_to_json(s).dump());
   };
   return j;
 }

@@ -4,6 +4,8 @@
 // resumes with the solves and continuation runs it had finished (issue 19 item 5). Keys:
 //   "solve/<batch>/<start>"  one multistart solve (an nlp::SolverSummary)
 //   "run/<n>"                one continuation run (a continuation::ContinuationResult)
+//   "run_state/<n>"          where run n stood at its last converged point (continuation::RunState),
+//                            replaced at each; a resumed run goes on from there
 // The walker multistart job uses the same journal for its single batch (batch 0). A job of several
 // sweeps (foot_design_kind.hpp) gives each its own prefix: "<prefix>solve/...", "<prefix>run/...".
 // Values are JSON with every field, doubles in round-trip precision, so a replayed sweep takes the
@@ -26,6 +28,8 @@ nlohmann::json summary_to_json(const nlp::SolverSummary& s);
 nlp::SolverSummary summary_from_json(const nlohmann::json& j);  // throws records::RecordError
 nlohmann::json run_to_json(const continuation::ContinuationResult& r);
 continuation::ContinuationResult run_from_json(const nlohmann::json& j);
+nlohmann::json run_state_to_json(const continuation::RunState& s);
+continuation::RunState run_state_from_json(const nlohmann::json& j);
 
 // One foot's finished sweep reduced to its best point per speed (studies::FootSweepSummary): the
 // result a comparison's or a design's work unit leaves for its job (foot/foot_comparison_kind.cpp,
