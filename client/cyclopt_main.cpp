@@ -14,6 +14,7 @@
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
 #include "cyclopt/plot/job_report.hpp"
 #include "cyclopt/plot/pdf_report.hpp"
+#include "cyclopt/plot/rich_text.hpp"
 #include "cyclopt/plot/sensitivity_figures.hpp"
 #include "cyclopt/plot/walker_figures.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
@@ -695,7 +696,7 @@ int plot(Session& s, const Options& o) {
   if (figures.empty()) throw std::invalid_argument("plot " + kind + ": nothing to draw");
   for (const cyclopt::plot::Figure& f : figures) {
     const std::vector<std::string> paths = cyclopt::plot::write_figure(f, dir);
-    std::printf("%s: %s %s\n", f.caption.c_str(), paths[0].c_str(), paths[1].c_str());
+    std::printf("%s: %s %s\n", cyclopt::plot::rich_text_plain(f.caption).c_str(), paths[0].c_str(), paths[1].c_str());
   }
   return kOk;
 }

@@ -154,7 +154,8 @@ TEST(RichText, SubAndSuperscriptsAreSmallerShiftedRunsInFiguresAndSubSupInHtml) 
   EXPECT_EQ(runs[7].shift, 1);
   EXPECT_EQ(runs[8].text, ") f_mech a_{b") << "plain underscores and an unclosed brace stay text";
   EXPECT_EQ(rich_text_html("Λ < 1, x_{H}^{−} & m^{2}"), "Λ &lt; 1, x<sub>H</sub><sup>−</sup> &amp; m<sup>2</sup>");
-  EXPECT_EQ(rich_text_plain("x_{H}^{+}"), "xH+");
+  EXPECT_EQ(rich_text_plain("x_{H}^{+}"), "x_H^+");
+  EXPECT_EQ(rich_text_plain("f_{mech} in kg/m^{2}"), "f_mech in kg/m^2");
   // Drawn: the raised or lowered run is smaller than the same letters on the baseline, and the
   // markup's braces are not drawn.
   Canvas c((out_dir() / "rich_text.png").string(), 200, 60);

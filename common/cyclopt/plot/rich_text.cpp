@@ -25,7 +25,7 @@ std::vector<TextRun> rich_text_runs(std::string_view s) {
 
 std::string rich_text_plain(std::string_view markup) {
   std::string out;
-  for (const TextRun& r : rich_text_runs(markup)) out += r.text;
+  for (const TextRun& r : rich_text_runs(markup)) out += (r.shift < 0 ? "_" : r.shift > 0 ? "^" : "") + r.text;
   return out;
 }
 

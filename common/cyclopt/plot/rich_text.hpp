@@ -18,7 +18,7 @@ struct TextRun {
 // The runs of `markup` in order; an unclosed "_{" or "^{" reads as plain text.
 std::vector<TextRun> rich_text_runs(std::string_view markup);
 
-// The text without markup ("x_{H}^{-}" -> "xH-"), e.g. for a terminal.
+// The text as a terminal shows it, braces dropped ("x_{H}^{-}" -> "x_H^-", "f_{mech}" -> "f_mech").
 std::string rich_text_plain(std::string_view markup);
 
 }  // namespace cyclopt::plot
