@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace cyclopt::plot {
 namespace {
@@ -119,17 +120,30 @@ Report walker_job_report(const nlohmann::json& doc, double speed) {
   ReportSection figures;
   figures.heading = "Figures over speed";
   std::vector<std::string> not_drawn;
-  try {
-    const Figure curves{"solution_curves",
-                        "All " + std::to_string(r.curves.size()) + " stored solution curves (numbered as `cyclopt query` "
-                        "numbers them) and curve 0, the best per speed, as the wide pale envelope (seed 001 Fig. 9.1)",
-                        solution_curves_chart(r), {}};
-    figures.figures.push_back(report_figure(curves));
-  } catch (const std::invalid_argument& e) {
-    not_drawn.push_back(std::string("solution curves: ") + e.what());
+  std::set<double> speeds;  // converged ones: a chart over speed needs two
+  for (const GaitPoint& p : r.points)
+    if (p.converged) speeds.insert(p.speed);
+  if (speeds.size() < 2) {
+    figures.heading = "Figures";
+    figures.text = "One converged speed: the charts over speed (cost of transport, torques, step length, Floquet "
+                   "multiplier) need two or more; a sweep draws them.";
+    for (const Figure& f : walker_figures({r}, speed, &not_drawn))
+      if (f.name == "foot") figures.figures.push_back(report_figure(f));
+    not_drawn.clear();
+  } else {
+    try {
+      const Figure curves{"solution_curves",
+                          "All " + std::to_string(r.curves.size()) + " stored solution curves (numbered as `cyclopt "
+                          "query` numbers them) and curve 0, the best per speed, as the wide pale envelope (seed 001 "
+                          "Fig. 9.1)",
+                          solution_curves_chart(r), {}};
+      figures.figures.push_back(report_figure(curves));
+    } catch (const std::invalid_argument& e) {
+      not_drawn.push_back(std::string("solution curves: ") + e.what());
+    }
+    for (const Figure& f : walker_figures({r}, speed, &not_drawn))
+      if (f.name != "stroboscope") figures.figures.push_back(report_figure(f));
   }
-  for (const Figure& f : walker_figures({r}, speed, &not_drawn))
-    if (f.name != "stroboscope") figures.figures.push_back(report_figure(f));
   for (const std::string& why : not_drawn) figures.text += (figures.text.empty() ? "Not drawn: " : "; ") + why;
   report.sections.push_back(figures);
   const GaitPoint* chosen = chosen_point(r, speed);
