@@ -132,6 +132,8 @@ std::optional<cyclopt_lcm::job_ack_t> ServiceClient::cancel(std::int64_t job_id,
   return ack;
 }
 
+constexpr double kQueryRetrySeconds = 0.5;
+
 std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest request, double timeout_seconds) {
   storage::QueryPage all;
   const auto deadline = Clock::now() + seconds(timeout_seconds);
@@ -147,9 +149,13 @@ std::optional<storage::QueryPage> ServiceClient::query(storage::QueryRequest req
     msg.limit = std::min(remaining, channels::kMaxQueryLimit);
     msg.part_offset = static_cast<int>(row_text.size());
     awaiting_.insert(msg.request_id);
-    bus_.publish(channels::kQuery, msg, key_ ? &key_->keys[0] : nullptr);
-    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-    const auto answer = await(replies_, msg.request_id, left);
+    // A query only reads: resent with the same id every kQueryRetrySeconds until answered, so a
+    // datagram lost (or sent before the server listens) costs half a second, not the timeout.
+    std::optional<cyclopt_lcm::query_reply_t> answer;
+    for (auto left = deadline - Clock::now(); !answer && left > std::chrono::milliseconds(1); left = deadline - Clock::now()) {
+      bus_.publish(channels::kQuery, msg, key_ ? &key_->keys[0] : nullptr);
+      answer = await(replies_, msg.request_id, std::min(kQueryRetrySeconds, std::chrono::duration<double>(left).count()));
+    }
     awaiting_.erase(msg.request_id);
     if (!answer) return std::nullopt;
     const cyclopt_lcm::query_reply_t& reply = *answer;
