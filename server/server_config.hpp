@@ -2,7 +2,7 @@
 // cycloptd's settings: defaults, then a JSON config file (--config), then command-line flags.
 //
 //   {"database": "cyclopt.db", "lcm_url": "udpm://239.255.76.67:7667?ttl=0", "workers": 2,
-//    "max_job_seconds": 3600, "max_job_iterations": 100000, "max_job_memory_mb": 4096,
+//    "max_job_seconds": 3600, "max_job_iterations": 10000000, "max_job_memory_mb": 4096,
 //    "max_queued_jobs": 100, "max_queued_hours": 168, "progress_hz": 5,
 //    "executor": "slurm", "slurm": {"spool": "/shared/cyclopt-spool", "partition": "batch", "account": "lab",
 //                                   "cpus_per_unit": 2, "time_limit_minutes": 120, "max_submissions": 4,
@@ -65,7 +65,7 @@ running jobs are checkpointed (their stored points kept) and resume at the next 
   --workers N            worker threads, 1..256 (default: number of cores)
   --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600); a job whose
                          estimated time exceeds it is rejected at submission
-  --max-job-iterations N per-job iteration cap, 1..1e9 (default 100000)
+  --max-job-iterations N per-job iteration cap, 1..1e9 (default 1e7)
   --max-job-memory-mb MB a job whose estimated peak memory exceeds it is rejected,
                          [16, 1048576] (default 4096)
   --max-queued-jobs N    queued jobs per sender (the authenticated key, or for unauthenticated

@@ -22,7 +22,10 @@ const char* to_string(StopReason r);
 // Per-job limits after the server's caps were applied to the spec's "limits".
 struct JobLimits {
   double max_wall_seconds = 3600.0;
-  int max_iterations = 100000;  // summed over all points (solver iterations or point evaluations)
+  // Summed over all points (solver iterations or point evaluations). A backstop against runaway
+  // loops: the time limit is the guard that prices a job (a 21-speed rolling-foot sweep needs over
+  // 1e5 SQP iterations).
+  int max_iterations = 10000000;
 };
 
 class JobContext;
