@@ -127,9 +127,10 @@ Report walker_job_report(const nlohmann::json& doc, double speed) {
     figures.heading = "Figures";
     figures.text = "One converged speed: the charts over speed (cost of transport, torques, step length, Floquet "
                    "multiplier) need two or more; a sweep draws them.";
-    for (const Figure& f : walker_figures({r}, speed, &not_drawn))
-      if (f.name == "foot") figures.figures.push_back(report_figure(f));
-    not_drawn.clear();
+    try {
+      figures.figures.push_back(report_figure(walker_figure("foot", {r}, speed)));
+    } catch (const std::invalid_argument&) {  // point feet: no foot to draw
+    }
   } else {
     try {
       const Figure curves{"solution_curves",
