@@ -68,7 +68,6 @@ class WorkerJobContext final : public service::JobContext {
   }
   double publish_seconds() const { return publish_seconds_; }
   int points_stored() const { return points_stored_; }
-  bool complete() const { return points_total_ >= 0 && points_stored_ >= points_total_; }
 
  private:
   // The message of a report, without percentage and ETA (the meter's).

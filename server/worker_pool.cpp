@@ -200,14 +200,14 @@ void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const se
     state = storage::JobState::failed;
   } else if (stop == service::StopReason::cancelled) {
     state = storage::JobState::cancelled;
-  } else if (stop == service::StopReason::time_limit || stop == service::StopReason::iteration_limit) {
-    if (!ctx.complete()) {
-      state = storage::JobState::failed;
-      error = stop == service::StopReason::time_limit
-                  ? "limits.max_wall_seconds: exceeded " + std::to_string(ctx.limits().max_wall_seconds) + " s"
-                  : "limits.max_iterations: exceeded " + std::to_string(ctx.limits().max_iterations);
-    }
   }
+  // A job its limit stopped failed unless it had already stored and converged every point it
+  // announced; either way its reason names the limit first, then what the stored points achieved.
+  std::string limit_error;
+  if (error.empty() && stop == service::StopReason::time_limit)
+    limit_error = "limits.max_wall_seconds: exceeded " + std::to_string(ctx.limits().max_wall_seconds) + " s";
+  if (error.empty() && stop == service::StopReason::iteration_limit)
+    limit_error = "limits.max_iterations: exceeded " + std::to_string(ctx.limits().max_iterations);
   const double run_seconds = ctx.unrecorded_seconds();
   if (stop == service::StopReason::shutdown && error.empty()) {
     record_state(job, ctx, [&] {
@@ -220,6 +220,10 @@ void WorkerPool::run_job(const storage::JobRecord& job, std::shared_ptr<const se
       outcome = storage::judge_job_outcome(store_.required_points(job.id), store_.job(job.id)->points_total);
       state = outcome->state;
       error = outcome->summary;
+      if (!limit_error.empty() && state != storage::JobState::done) {
+        state = storage::JobState::failed;
+        error = limit_error + "; " + error;
+      }
     }
     store_.finish(job.id, state, error, run_seconds, ctx.publish_seconds(),
                   outcome ? std::optional<int>(outcome->converged) : std::nullopt);
