@@ -3,6 +3,7 @@
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
+#include "cyclopt/walker/stance_dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,6 +47,21 @@ LineChart per_joint_chart(const records::GaitTrajectoryRecord& tr, AxesStyle axe
 }
 
 const char* kStepTime = "relative step time t/T (-), impact to impact";
+
+// Sample i of the stored rows (q or dq/dt) as a coordinate vector q_s = [theta; q_b].
+walker::CoordinateVector<double> sample(const std::vector<std::vector<double>>& rows, std::size_t i) {
+  walker::CoordinateVector<double> out(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r) out(static_cast<Eigen::Index>(r)) = rows[r].at(i);
+  return out;
+}
+
+// sum_i P_i = sum_i u_i dq_{b,i}/dt at sample k.
+double total_joint_power(const records::GaitTrajectoryRecord& tr, std::size_t k) {
+  double p = 0;
+  for (int j = 0; j < joints_of(tr); ++j)
+    p += tr.torque[static_cast<std::size_t>(j)].at(k) * tr.q_dot.at(static_cast<std::size_t>(1 + j)).at(k);
+  return p;
+}
 
 }  // namespace
 
@@ -118,12 +134,38 @@ LineChart contact_point_chart(const WalkerJobResults& job, const GaitPoint& p) {
   return chart;
 }
 
+LineChart energy_chart(const WalkerJobResults& job, const GaitPoint& p) {
+  const records::GaitTrajectoryRecord& tr = trajectory_of(p);
+  const walker::WalkerModel<double> model = job.walker.model();
+  Series energy{"E_{tot}(t) - E_{tot}(0), from q and dq/dt", relative_time(tr), {}, false, false, palette(0)};
+  Series work{"work of the joint torques, ∫ Σ_{i} P_{i} dt", relative_time(tr), {}, false, true, palette(1)};
+  double e0 = 0, w = 0;
+  for (std::size_t k = 0; k < tr.time.size(); ++k) {
+    const walker::CoordinateVector<double> q = sample(tr.q, k);
+    const walker::StanceFrame<double> f = walker::stance_frame(model, q);
+    const double e = walker::kinetic_energy(model, f, sample(tr.q_dot, k)) + walker::potential_energy(model, f);
+    if (k == 0) e0 = e;
+    else w += 0.5 * (total_joint_power(tr, k - 1) + total_joint_power(tr, k)) * (tr.time[k] - tr.time[k - 1]);
+    energy.y.push_back(e - e0);
+    work.y.push_back(w);
+  }
+  LineChart chart;
+  chart.axes = {"Increase of the total energy within the step" + at_speed(p), kStepTime,
+                "E_{tot} - E_{tot}(0) (J), E_{tot} = E_{pot} + E_{kin}", true};
+  chart.x_range = Range{0, 1};
+  chart.series = {std::move(energy), std::move(work)};
+  chart.reference_lines.push_back({0.0, ""});
+  return chart;
+}
+
 std::vector<Figure> within_step_figures(const WalkerJobResults& job, const GaitPoint& p) {
   std::vector<Figure> out = {
       {"step_joint_angles", "Joint angles q_{b} over one step (eq. 5.3)", joint_angle_chart(job, p), {}},
       {"step_joint_torques", "Joint torques u over one step (eq. 5.35)", joint_torque_chart(job, p), {}},
       {"step_joint_powers", "Joint powers over one step; shaded: the positive part, which f_{mech} integrates (eq. 5.100, 5.102)",
-       joint_power_chart(job, p), {}}};
+       joint_power_chart(job, p), {}},
+      {"step_energy", "Increase of the total energy over one step (Fig. 9.5a) and the joint torques' work: equal, the contact rolls without slipping",
+       energy_chart(job, p), {}}};
   if (job.walker.foot.model != foot::FootModel::point)
     out.push_back({"step_contact_point", "Rolling contact point along the stance sole (seed 001 section 9.1)",
                    contact_point_chart(job, p), {}});
