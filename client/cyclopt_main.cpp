@@ -109,15 +109,17 @@ results database file directly (read-only) when given --db FILE.
                      write DIR/NAME.png and DIR/NAME.svg (default DIR: .) for walker jobs
                      (from the server, --db FILE, or files `export` wrote; several jobs give
                      one curve each). KIND: cost-of-transport (Fig. 9.19a), torques (9.4),
-                     step-length (9.6a), floquet (9.6b), stroboscope (9.2; gait nearest
-                     --speed, first job), foot (3.5a), all; foot-comparison (a
-                     foot_comparison job: f_mech of every foot with the best envelope,
-                     Fig. 9.19a, and the foot outlines, Fig. 9.8); foot-fit (a foot_fit job:
-                     measured against model ankle and the fitted outline per converged fit,
-                     Fig. 4.3/4.4); foot-design (a foot_design job: the designs over the
-                     start foot, Fig. 10.5/10.6, f_mech per density with the start foot and
-                     point feet, Fig. 10.7, the best design's gait, Fig. 10.4); sensitivity
-                     (a sensitivity job: Delta f_mech over the relative change of each
+                     step-length (9.6a), floquet (9.6b), impact-loss (9.5b), stroboscope
+                     (9.2; gait nearest --speed, first job), foot (3.5a), all;
+                     foot-comparison (a foot_comparison job: f_mech of every
+                     foot with the best envelope, Fig. 9.19a, and the foot
+                     outlines, Fig. 9.8); foot-fit (a foot_fit job: measured
+                     against model ankle and the fitted outline per converged
+                     fit, Fig. 4.3/4.4); foot-design (a foot_design job: the
+                     designs over the start foot, Fig. 10.5/10.6, f_mech per
+                     density with the start foot and point feet, Fig. 10.7, the
+                     best design's gait, Fig. 10.4); sensitivity (a sensitivity
+                     job: Delta f_mech over the relative change of each
                      parameter, continuation and KKT tangent, Fig. 10.1); or
                      giant-swing --result FILE
                      (a cyclopt-giant-swing result, seed 000 Fig. 5.5)

@@ -6,6 +6,7 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/task_spec_json.hpp"
 #include "cyclopt/plot/foot_figures.hpp"
+#include "cyclopt/plot/gait_energy.hpp"
 #include "cyclopt/plot/gait_animation.hpp"
 #include "cyclopt/plot/gait_stroboscope.hpp"
 #include "cyclopt/plot/giant_swing_stroboscope.hpp"
@@ -567,6 +568,30 @@ TEST_F(WalkerFigures, EnergyChartAgreesWithTheWorkOfTheJointTorques) {
                 r.walker.setup.foot.dump().c_str(), p.speed, scale, worst, energy.size());
     EXPECT_GT(scale, 0.1);  // the energy changes within the step: the test can fail
     EXPECT_LT(worst, 5e-3 * scale);
+  }
+}
+
+// Fig. 9.5b: the impact's loss relative to E_kin after it. The stored loss (from the impact map's
+// momentum balance) equals the drop of E_kin across the step's end computed from the stored
+// trajectory: E_kin at its last sample (before the impact) minus E_kin at its first (after the
+// previous impact; the gait is periodic).
+TEST_F(WalkerFigures, ImpactLossIsTheKineticEnergyTheStepEndsWithAboveItsStart) {
+  for (const StoredJob* job : {point_feet_, hmt_}) {
+    const WalkerJobResults r = walker_job_results(document_of(1, *job));
+    const LineChart chart = impact_loss_chart({r});
+    ASSERT_EQ(chart.series.size(), 1u);
+    const walker::WalkerModel<double> m = r.walker.model();
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+      const GaitPoint& p = r.points[i];
+      const records::GaitTrajectoryRecord& tr = *p.trajectory;
+      const double before = kinetic_energy_at(m, tr, tr.time.size() - 1), after = kinetic_energy_at(m, tr, 0);
+      std::printf("%s at %.1f m/s: stored impact loss %.6f J, E_kin before - after %.6f J, %.2f %%\n",
+                  r.walker.setup.foot.dump().c_str(), p.speed, p.gait.impact_energy_loss, before - after,
+                  chart.series[0].y[i]);
+      EXPECT_GT(p.gait.impact_energy_loss, 0.0);
+      EXPECT_NEAR(p.gait.impact_energy_loss, before - after, 1e-6 * before);
+      EXPECT_DOUBLE_EQ(chart.series[0].y[i], 100.0 * p.gait.impact_energy_loss / after);
+    }
   }
 }
 

@@ -1,5 +1,7 @@
 #include "cyclopt/plot/speed_charts.hpp"
 
+#include "cyclopt/plot/gait_energy.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -145,6 +147,26 @@ LineChart floquet_chart(const std::vector<WalkerJobResults>& jobs) {
       chart.reference_lines.push_back({-1.0, "Λ = −1: stability limit"});
       break;
     }
+  return chart;
+}
+
+LineChart impact_loss_chart(const std::vector<WalkerJobResults>& jobs) {
+  std::map<const GaitPoint*, double> percent;  // per drawn point, from its job's walker
+  for (const WalkerJobResults& job : jobs) {
+    const walker::WalkerModel<double> model = job.walker.model();
+    for (const GaitPoint& p : job.points)
+      if (p.converged && p.trajectory && !p.trajectory->time.empty())
+        percent[&p] = 100.0 * p.gait.impact_energy_loss / kinetic_energy_at(model, *p.trajectory, 0);
+  }
+  LineChart chart = per_job_chart(
+      jobs,
+      {"Kinetic energy dissipated in the impact (seed 001 Fig. 9.5b)", "mean speed v (m/s)",
+       "(E_{kin}^{−} − E_{kin}^{+}) / E_{kin}^{+} (%)", true},
+      [&percent](const GaitPoint& p) {
+        const auto at = percent.find(&p);
+        return at == percent.end() ? std::nan("") : at->second;
+      });
+  start_at_zero(chart);
   return chart;
 }
 

@@ -2,8 +2,8 @@
 
 #include "cyclopt/plot/foot_figures.hpp"
 #include "cyclopt/plot/html_report.hpp"
+#include "cyclopt/plot/gait_energy.hpp"
 #include "cyclopt/plot/walker_pose.hpp"
-#include "cyclopt/walker/stance_dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,13 +47,6 @@ LineChart per_joint_chart(const records::GaitTrajectoryRecord& tr, AxesStyle axe
 }
 
 const char* kStepTime = "relative step time t/T (-), impact to impact";
-
-// Sample i of the stored rows (q or dq/dt) as a coordinate vector q_s = [theta; q_b].
-walker::CoordinateVector<double> sample(const std::vector<std::vector<double>>& rows, std::size_t i) {
-  walker::CoordinateVector<double> out(static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t r = 0; r < rows.size(); ++r) out(static_cast<Eigen::Index>(r)) = rows[r].at(i);
-  return out;
-}
 
 // sum_i P_i = sum_i u_i dq_{b,i}/dt at sample k.
 double total_joint_power(const records::GaitTrajectoryRecord& tr, std::size_t k) {
@@ -141,9 +134,7 @@ LineChart energy_chart(const WalkerJobResults& job, const GaitPoint& p) {
   Series work{"work of the joint torques, ∫ Σ_{i} P_{i} dt", relative_time(tr), {}, false, true, palette(1)};
   double e0 = 0, w = 0;
   for (std::size_t k = 0; k < tr.time.size(); ++k) {
-    const walker::CoordinateVector<double> q = sample(tr.q, k);
-    const walker::StanceFrame<double> f = walker::stance_frame(model, q);
-    const double e = walker::kinetic_energy(model, f, sample(tr.q_dot, k)) + walker::potential_energy(model, f);
+    const double e = total_energy_at(model, tr, k);
     if (k == 0) e0 = e;
     else w += 0.5 * (total_joint_power(tr, k - 1) + total_joint_power(tr, k)) * (tr.time[k] - tr.time[k - 1]);
     energy.y.push_back(e - e0);

@@ -33,7 +33,7 @@ const GaitPoint* chosen_point(const WalkerJobResults& job, double speed) {
 
 const std::vector<std::string>& walker_figure_kinds() {
   static const std::vector<std::string> kinds = {"cost-of-transport", "torques", "step-length", "floquet",
-                                                 "stroboscope", "foot"};
+                                                 "impact-loss", "stroboscope", "foot"};
   return kinds;
 }
 
@@ -48,6 +48,9 @@ Figure walker_figure(const std::string& kind, const std::vector<WalkerJobResults
     return {"step_length", "Step length over speed (seed 001 Fig. 9.6a)", step_length_chart(jobs), {}};
   if (kind == "floquet")
     return {"floquet_multiplier", "Floquet multiplier over speed (seed 001 Fig. 9.6b)", floquet_chart(jobs), {}};
+  if (kind == "impact-loss")
+    return {"impact_loss", "Kinetic energy dissipated in the impact over speed (seed 001 Fig. 9.5b)",
+            impact_loss_chart(jobs), {}};
   if (kind == "stroboscope") {
     const GaitPoint* p = chosen_point(jobs.front(), speed);
     if (!p) throw std::invalid_argument("job " + std::to_string(jobs.front().id) +

@@ -4,6 +4,7 @@
 //   torques            max |u| per joint over speed (Fig. 9.4)
 //   step-length        step length over speed (Fig. 9.6a)
 //   floquet            Floquet multiplier over speed (Fig. 9.6b)
+//   impact-loss        kinetic energy the impact dissipates, relative to E_kin after it (Fig. 9.5b)
 //   stroboscope        two steps of the gait nearest a speed, first job (Fig. 9.2)
 //   foot               the first foot (not point feet) of the jobs with its generating polygon (Fig. 3.5a)
 
