@@ -15,8 +15,8 @@ OUT=$HERE/results/fault_resume.txt
   echo "=== $(date -u '+%Y-%m-%d %H:%M UTC'), $(git -C "$HERE" rev-parse --short HEAD)"
   echo "$(lscpu | grep 'Model name' | sed 's/  */ /g'), $(nproc) cores; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "\$ sweep_resume.sh cycloptd cyclopt 20 0.25 P2-shoes-left-HMT 0.3:0.1:2.3"
-  # The sweep needs more than the default cap of 100000 solver iterations per job.
-  CYCLOPTD_ARGS="--max-job-iterations 1000000000 --max-job-seconds 604800" CYCLOPT_RESUME_TIMEOUT=3600 bash "$HERE/../tests/service/sweep_resume.sh" "$BUILD/server/cycloptd" "$BUILD/client/cyclopt" \
+  # Caps raised so that neither the iteration nor the time limit can end the measured sweep.
+  CYCLOPTD_ARGS="--max-job-iterations 1000000000 --max-job-seconds 604800" CYCLOPT_RESUME_TIMEOUT=14400 bash "$HERE/../tests/service/sweep_resume.sh" "$BUILD/server/cycloptd" "$BUILD/client/cyclopt" \
     20 0.25 P2-shoes-left-HMT 0.3:0.1:2.3
   echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"
 } 2>&1 | tee -a "$OUT"

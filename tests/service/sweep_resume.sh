@@ -78,7 +78,7 @@ PREV_CP=0 PREV_ROWS=0 CPU_B=0
 STEP=$(awk -v n="$(sql "$A" "SELECT count(*) FROM checkpoints")" -v s="$SPREAD" 'BEGIN {k = int(n * s); print (k < 1 ? 1 : k)}')
 for k in 1 2 3; do
   # Kill once this attempt has recorded STEP new entries (finished solves or runs) and a bit more.
-  wait_for 600 bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -ge $((PREV_CP + STEP)) ]" || fail "attempt $k recorded too little"
+  wait_for "${CYCLOPT_RESUME_TIMEOUT:-900}" bash -c "[ \$(sqlite3 '$B' 'SELECT count(*) FROM checkpoints') -ge $((PREV_CP + STEP)) ]" || fail "attempt $k recorded too little"
   sleep "0.$((RANDOM % 3 + 1))"
   CPU=$(cpu_seconds "$SERVER")
   kill -9 "$SERVER"; wait "$SERVER" 2>/dev/null || true; SERVER=""
