@@ -53,63 +53,77 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: cyclopt [--lcm-url URL] [--timeout S] COMMAND [ARGS]
 
-Client of the cycloptd job server. Remote commands talk LCM (default URL: LCM's, i.e.
-LCM_DEFAULT_URL or UDP multicast); status, list, query, export, plot and report read a
-results database file directly (read-only) when given --db FILE.
+Client of the cycloptd job server. Remote commands talk LCM (default URL: LCM's,
+i.e. LCM_DEFAULT_URL or UDP multicast); status, list, query, export, plot and
+report read a results database file directly (read-only) when given --db FILE.
 
   submit --spec FILE.json [--request-id ID] [--watch]
-  submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI [--point-delay-ms N]
-         [--name TEXT] [--request-id ID] [--watch]
-  submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK] [--name TEXT] ...
+  submit --foot FILE.json|PRESET --sweep PARAM --values LO:STEP:HI
+         [--point-delay-ms N] [--name TEXT] [--request-id ID] [--watch]
+  submit --foot FILE.json|PRESET --speeds LO:STEP:HI [--task TASK]
+         [--name TEXT] ...
   submit --task foot_comparison --speeds LO:STEP:HI [--feet PRESET,PRESET,...]
          [--reference PRESET] [--starts N] ...
   submit --task foot_fit --trials FILE.trc|FILE.csv,... [--name TEXT] ...
-  submit --task foot_design [--foot FILE.json|PRESET] [--densities LIST|LO:STEP:HI]
-         [--design-speed V] [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N]
+  submit --task foot_design [--foot FILE.json|PRESET]
+         [--densities LIST|LO:STEP:HI] [--design-speed V]
+         [--speeds LO:STEP:HI] [--starts N] [--sweep-starts N]
          [--foot-scale S] ...
-  submit --task sensitivity --foot FILE.json|PRESET --speed V [--parameters P,P,...]
+  submit --task sensitivity --foot FILE.json|PRESET --speed V
+         [--parameters P,P,...]
          [--relative-range R] [--steps N] ...
-                     queue a job (proto/schemas/job.schema.json); --sweep builds a foot_sweep
-                     spec, --speeds a walker job of TASK (default sweep); foot_comparison
-                     sweeps --feet (default: the 16 of seed 001 section 9.2) and --reference
-                     (default point) with --starts starts per seed speed; foot_fit fits HM
-                     and HMT feet to the trials' ankle tracks (markers LMAL and MMAL, z up;
-                     other layouts: cyclopt-foot fit --job-spec FILE); foot_design designs
-                     a foot per density from --foot (default P2-shoes-left-HMT) with
-                     --starts design starts at --design-speed (seed 001 section 10.2;
-                     defaults 10:10:70 kg/m^2, 20 starts, 2.3 m/s of 0.3:0.1:2.3); sensitivity
-                     optimises at --speed and compares d f_mech / d p from the KKT point with
-                     a +-R continuation of each parameter (seed 001 section 10.1; defaults:
-                     every parameter, R 0.1, 5 steps each way). Resent every
-                     0.5 s until the server answers (same request id, so never queued
-                     twice). Prints the job id.
-  watch JOB          live progress bar until the job ends (--watch-timeout S, default 3600)
-  status JOB         one job's state, counts, timings and last progress (times ISO 8601, local)
-  list [--state S]   jobs, one line each: id, name, kind, foot, state, progress, best
-                     objective, run time, submitted/started/finished (ISO 8601, local); fits
-                     the terminal (default 120 columns); --wide every column (request ids,
-                     raw numbers). S: queued, running, done, incomplete, failed, cancelled
+                     queue a job (proto/schemas/job.schema.json); --sweep builds
+                     a foot_sweep spec, --speeds a walker job of TASK (default
+                     sweep); foot_comparison sweeps --feet (default: the 16 of
+                     seed 001 section 9.2) and --reference (default point) with
+                     --starts starts per seed speed; foot_fit fits HM and HMT
+                     feet to the trials' ankle tracks (markers LMAL and MMAL, z
+                     up; other layouts: cyclopt-foot fit --job-spec FILE);
+                     foot_design designs a foot per density from --foot (default
+                     P2-shoes-left-HMT) with --starts design starts at
+                     --design-speed (seed 001 section 10.2; defaults 10:10:70
+                     kg/m^2, 20 starts, 2.3 m/s of 0.3:0.1:2.3); sensitivity
+                     optimises at --speed and compares d f_mech / d p from the
+                     KKT point with a +-R continuation of each parameter (seed
+                     001 section 10.1; defaults: every parameter, R 0.1, 5 steps
+                     each way). Resent every 0.5 s until the server answers
+                     (same request id, so never queued twice). Prints the job
+                     id.
+  watch JOB          live progress bar until the job ends (--watch-timeout S,
+                     default 3600)
+  status JOB         one job's state, counts, timings and last progress (times
+                     ISO 8601, local)
+  list [--state S]   jobs, one line each: id, name, kind, foot, state, progress,
+                     best objective, run time, submitted/started/finished (ISO
+                     8601, local); fits the terminal (default 120 columns);
+                     --wide every column (request ids, raw numbers). S: queued,
+                     running, done, incomplete, failed, cancelled
   top [--state S] [--interval S] [--once]
-                     every job live, one line each, refreshed in place every S s (default 2;
-                     a log gets the table again each time; --once: print once and exit);
-                     fits the terminal (default 80 columns) by dropping columns from the
-                     right, never state, progress or best objective (docs/watching-jobs.md)
-  query JOB [--what solutions|events|curves|trajectories] [--wide | --csv | --json]
-                     a job's solved points (default): for walker jobs one line per point
-                     (speed, f_mech, step length, period, cadence, Floquet multiplier, impact
-                     loss, status, curve); for a foot_design job one line per density (its
-                     design, masses, active bounds, mean f_mech, savings); for a
-                     sensitivity job one line per parameter (KKT df/dp, relative, Delta f
-                     predicted and by continuation at both ends, verdict); --wide / --csv
-                     every scalar, --json everything
+                     every job live, one line each, refreshed in place every S s
+                     (default 2; a log gets the table again each time; --once:
+                     print once and exit); fits the terminal (default 80
+                     columns) by dropping columns from the right, never state,
+                     progress or best objective (docs/watching-jobs.md)
+  query JOB [--what solutions|events|curves|trajectories]
+                     [--wide | --csv | --json]
+                     a job's solved points (default): for walker jobs one line
+                     per point (speed, f_mech, step length, period, cadence,
+                     Floquet multiplier, impact loss, status, curve); for a
+                     foot_design job one line per density (its design, masses,
+                     active bounds, mean f_mech, savings); for a sensitivity job
+                     one line per parameter (KKT df/dp, relative, Delta f
+                     predicted and by continuation at both ends, verdict);
+                     --wide / --csv every scalar, --json everything
   export JOB [--out FILE]
-                     everything about a job as JSON: spec, events, curves, points, trajectories
+                     everything about a job as JSON: spec, events, curves,
+                     points, trajectories
   cancel JOB         cancel a queued or running job
   plot KIND (--job JOB ... | --from FILE.json ...) [--speed V] [--out DIR]
-                     write DIR/NAME.png and DIR/NAME.svg (default DIR: .) for walker jobs
-                     (from the server, --db FILE, or files `export` wrote; several jobs give
-                     one curve each). KIND: cost-of-transport (Fig. 9.19a), torques (9.4),
-                     step-length (9.6a), floquet (9.6b), impact-loss (9.5b), stroboscope
+                     write DIR/NAME.png and DIR/NAME.svg (default DIR: .) for
+                     walker jobs (from the server, --db FILE, or files `export`
+                     wrote; several jobs give one curve each). KIND:
+                     cost-of-transport (Fig. 9.19a), torques (9.4), step-length
+                     (9.6a), floquet (9.6b), impact-loss (9.5b), stroboscope
                      (9.2; gait nearest --speed, first job), foot (3.5a), all;
                      foot-comparison (a foot_comparison job: f_mech of every
                      foot with the best envelope, Fig. 9.19a, and the foot
@@ -121,22 +135,24 @@ results database file directly (read-only) when given --db FILE.
                      best design's gait, Fig. 10.4); sensitivity (a sensitivity
                      job: Delta f_mech over the relative change of each
                      parameter, continuation and KKT tangent, Fig. 10.1); or
-                     giant-swing --result FILE
-                     (a cyclopt-giant-swing result, seed 000 Fig. 5.5)
+                     giant-swing --result FILE (a cyclopt-giant-swing result,
+                     seed 000 Fig. 5.5)
   report JOB [--out FILE.html|FILE.pdf] [--speed V]
-                     one self-contained HTML page: provenance (version, build, seeds,
-                     dates, resolved and submitted spec), solved points (per density for a
-                     foot_design job), solver diagnostics per stored point, all figures;
-                     --speed: the gait shown within its step (default: the middle speed);
-                     FILE.pdf: the same as a PDF (figures as vector pages, no animations)
-                     (default FILE: jobJOB.html)
+                     one self-contained HTML page: provenance (version, build,
+                     seeds, dates, resolved and submitted spec), solved points
+                     (per density for a foot_design job), solver diagnostics per
+                     stored point, all figures; --speed: the gait shown within
+                     its step (default: the middle speed); FILE.pdf: the same as
+                     a PDF (figures as vector pages, no animations) (default
+                     FILE: jobJOB.html)
 
-Output of status, list, query: aligned table (times in ISO 8601: query's UTC, list's and
-status' local), or --wide / --csv / --json (Unix seconds).
+Output of status, list, query: aligned table (times in ISO 8601: query's UTC,
+list's and status' local), or --wide / --csv / --json (Unix seconds).
 Options: --lcm-url URL, --timeout S (answer timeout, default 10), --db FILE,
---key-file FILE (sign requests and believe only answers signed with this key; default
-$CYCLOPT_KEY_FILE; docs/service.md, Authentication), --version.
-A spec is checked locally (JSON, then the server's own validation) before it is sent.
+--key-file FILE (sign requests and believe only answers signed with this key;
+default $CYCLOPT_KEY_FILE; docs/service.md, Authentication), --version.
+A spec is checked locally (JSON, then the server's own validation) before it is
+sent.
 )";
 
 namespace cli = cyclopt::cli;

@@ -30,68 +30,90 @@ namespace ff = cyclopt::foot_fit;
 
 constexpr const char* kFitUsage = R"(usage: cyclopt-foot fit [options] TRIAL.trc|TRIAL.csv [--forces GRF.mot] ...
 
-Fits the HM and HMT feet to one foot's ankle trajectory over every complete stance of the
-trials (seed 001, section 4.2): two circle fits for the start (eq. 4.9-4.12), the HM fit
-(4.13-4.17), the HMT fit started from it (4.18-4.22), then refits that say how sure each
-parameter is. Units are SI on output (m, rad).
+Fits the HM and HMT feet to one foot's ankle trajectory over every complete
+stance of the trials (seed 001, section 4.2): two circle fits for the start (eq.
+4.9-4.12), the HM fit (4.13-4.17), the HMT fit started from it (4.18-4.22), then
+refits that say how sure each parameter is. Units are SI on output (m, rad).
 
-Reading: the ankle is the mean of two malleolus markers or one marker (eq. 4.1); missing
-samples (empty, NaN, or a marker at exactly 0,0,0) of other markers are ignored, gaps in the
-ankle markers up to --max-gap are interpolated. Stances come from, first that applies:
---interval; a ground-reaction file (--forces, plates assigned to this foot by centre of
-pressure); a CSV force column (Fz); else the ankle's kinematics. A stance that the recording
-or a long gap cuts is refused with the reason and not fitted.
+Reading: the ankle is the mean of two malleolus markers or one marker (eq. 4.1);
+missing samples (empty, NaN, or a marker at exactly 0,0,0) of other markers are
+ignored, gaps in the ankle markers up to --max-gap are interpolated. Stances
+come from, first that applies: --interval; a ground-reaction file (--forces,
+plates assigned to this foot by centre of pressure); a CSV force column (Fz);
+else the ankle's kinematics. A stance that the recording or a long gap cuts is
+refused with the reason and not fitted.
 
-  --marker NAME        ankle marker; give it twice for the two malleoli whose mean is the ankle
-                       (eq. 4.1); default LMAL and MMAL
-  --forces FILE        OpenSim ground reactions (.mot, .sto) of the trial named before it
-  --force-column NAME  the vertical force column (in --forces, or the CSV's; default: every
-                       plate of --forces by centre of pressure, or the CSV's Fz)
+  --marker NAME        ankle marker; give it twice for the two malleoli whose
+                       mean is the ankle (eq. 4.1); default LMAL and MMAL
+  --forces FILE        OpenSim ground reactions (.mot, .sto) of the trial named
+                       before it
+  --force-column NAME  the vertical force column (in --forces, or the CSV's;
+                       default: every plate of --forces by centre of pressure,
+                       or the CSV's Fz)
   --force-threshold N  |force| above which a plate is loaded (default 20 N)
-  --units mm|cm|m      unit of CSV files without a '# units:' line (.trc files state theirs)
-  --vertical-axis A    x, y or z: the file axis that points up (default: detected from the data)
+  --units mm|cm|m      unit of CSV files without a '# units:' line (.trc files
+                       state theirs)
+  --vertical-axis A    x, y or z: the file axis that points up (default:
+                       detected from the data)
   --ground Z           ground level along the vertical axis, m (default 0)
-  --direction RAD      walking direction in the horizontal plane (default: from the data, 4.2-4.3)
-  --max-gap S          longest gap of the ankle markers that is interpolated (default 0.05 s)
+  --direction RAD      walking direction in the horizontal plane (default: from
+                       the data, 4.2-4.3)
+  --max-gap S          longest gap of the ankle markers that is interpolated
+                       (default 0.05 s)
   --interval T0:T1     one stance as a time interval (s), taken as given
-  --max-rolling-speed V  kinematic rule: a stance is a run slower than V m/s holding a flat-foot
-                       frame (default 2)
-  --boundary-tolerance S  how far stance boundaries are moved for the boundary spread (default
-                       0.04 s); 0 skips it
-  --boundary-steps N   grid points per side up to the tolerance (default 4: 80 refits per
-                       kinematic stance set, 24 for force-plate stances, which only shrink)
+  --max-rolling-speed V
+                       kinematic rule: a stance is a run slower than V m/s
+                       holding a flat-foot frame (default 2)
+  --boundary-tolerance S
+                       how far stance boundaries are moved for the boundary
+                       spread (default 0.04 s); 0 skips it
+  --boundary-steps N   grid points per side up to the tolerance (default 4: 80
+                       refits per kinematic stance set, 24 for force-plate
+                       stances, which only shrink)
   --no-spread          no refits: conditional standard errors only
-  --parameter-tolerance F  stop a fit when its Gauss-Newton step moves no parameter by F of its
-                       standard error (default 0.01; 0: only the decrease tests, as a foot_fit job)
-  --model HM|HMT|both  which fits to report (default both; HMT always starts from HM)
+  --parameter-tolerance F
+                       stop a fit when its Gauss-Newton step moves no parameter
+                       by F of its standard error (default 0.01; 0: only the
+                       decrease tests, as a foot_fit job)
+  --model HM|HMT|both  which fits to report (default both; HMT always starts
+                       from HM)
   --no-toe-bound       drop the seed's l_MT <= z_min (4.18b)
-  --save-foot FILE     write the fitted foot (HMT unless --model HM) as a foot spec JSON, usable as
-                       `cyclopt-foot --foot FILE` and as the "foot" of a walker job
-  --plot-dir DIR       write fit_stances_K (ankle height over time with the stances, per trial),
-                       fit_{hm,hmt}_ankle (Fig. 4.3a/4.4a) and fit_{hm,hmt}_outline (Fig. 4.3b/4.4b)
-                       as .png and .svg
-  --json               print the full report as JSON (the HM and HMT records a foot_fit job stores)
-  --job-spec FILE      write a foot_fit job spec of the server (docs/foot-fitting.md) with the
-                       stances' ankle tracks inline instead of fitting: `cyclopt submit --spec FILE`
-Exit codes: 0 fitted and converged, 1 a fit did not converge, 2 bad usage, malformed file or no
-complete stance.
+  --save-foot FILE     write the fitted foot (HMT unless --model HM) as a foot
+                       spec JSON, usable as `cyclopt-foot --foot FILE` and as
+                       the "foot" of a walker job
+  --plot-dir DIR       write fit_stances_K (ankle height over time with the
+                       stances, per trial), fit_{hm,hmt}_ankle (Fig. 4.3a/4.4a)
+                       and fit_{hm,hmt}_outline (Fig. 4.3b/4.4b) as .png and
+                       .svg
+  --json               print the full report as JSON (the HM and HMT records a
+                       foot_fit job stores)
+  --job-spec FILE      write a foot_fit job spec of the server
+                       (docs/foot-fitting.md) with the stances' ankle tracks
+                       inline instead of fitting: `cyclopt submit --spec FILE`
+Exit codes: 0 fitted and converged, 1 a fit did not converge, 2 bad usage,
+malformed file or no complete stance.
 )";
 
 constexpr const char* kSynthUsage = R"(usage: cyclopt-foot synth [--preset NAME | --foot FILE.json] --out DIR [options]
 
-Writes synthetic marker trials of a known foot rolling on flat ground (ground truth for
-`cyclopt-foot fit`): markers LMAL and MMAL either side of the ankle, a force column Fz (CSV).
+Writes synthetic marker trials of a known foot rolling on flat ground (ground
+truth for `cyclopt-foot fit`): markers LMAL and MMAL either side of the ankle, a
+force column Fz (CSV).
 
-  --trials K          number of trials (default 3); trial k is offset by 0.11 m (k-1), rolls
-                      7% slower per trial and walks 0.02 rad more to the left
+  --trials K          number of trials (default 3); trial k is offset by 0.11 m
+                      (k-1), rolls 7% slower per trial and walks 0.02 rad more
+                      to the left
   --rate HZ           sampling rate (default 200)
-  --noise M           standard deviation of each marker coordinate, m (default 0.0005)
+  --noise M           standard deviation of each marker coordinate, m (default
+                      0.0005)
   --offset M          x_off of the first trial, m (default 0.4)
   --direction RAD     walking direction of the first trial (default 0)
-  --theta T:TH,...    foot-angle history theta_F(t), piecewise linear knots (s:rad); default
-                      -0.35 rad at heel strike, flat at 0.12 s, toe-off at 0.62 s
-  --swing S           seconds of swing before heel strike and after toe-off (default 0.1: a
-                      stance that starts or ends with the recording is refused by the fit)
+  --theta T:TH,...    foot-angle history theta_F(t), piecewise linear knots
+                      (s:rad); default -0.35 rad at heel strike, flat at 0.12 s,
+                      toe-off at 0.62 s
+  --swing S           seconds of swing before heel strike and after toe-off
+                      (default 0.1: a stance that starts or ends with the
+                      recording is refused by the fit)
   --format trc|csv|both  (default both)
   --units mm|cm|m     (default mm)
   --seed N            noise seed (default 1)

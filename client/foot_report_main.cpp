@@ -26,26 +26,37 @@
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: cyclopt-foot [--preset NAME | --foot FILE.json] [--density RHO] [--samples N] [--json]
-       cyclopt-foot --list-presets [--subject P1..P9] [--footwear barefoot|shoes] [--side left|right]
-                    [--model HM|HMT] [--trajectory SG|AK|IK] [--table 4.2|B.1..B.11] [--section-9-2]
-       cyclopt-foot fit [options] TRIAL...    (fit HM / HMT to marker files; fit --help)
-       cyclopt-foot synth [options] --out DIR (synthetic marker trials; synth --help)
+constexpr const char* kUsage = R"(usage: cyclopt-foot [--preset NAME | --foot FILE.json] [--density RHO]
+                    [--samples N] [--json]
+       cyclopt-foot --list-presets [--subject P1..P9]
+                    [--footwear barefoot|shoes] [--side left|right]
+                    [--model HM|HMT] [--trajectory SG|AK|IK]
+                    [--table 4.2|B.1..B.11] [--section-9-2]
+       cyclopt-foot fit [options] TRIAL...
+       (fit HM / HMT to marker files; fit --help)
+       cyclopt-foot synth [options] --out DIR
+       (synthetic marker trials; synth --help)
 
-Describes a foot geometry of the walker: polygon transitions, admissible foot angles, mass
-properties from an area density (appendix E of the seed) and the ankle / contact-point kinematics
-while the foot rolls. Units are SI (m, rad, kg, kg/m^2).
+Describes a foot geometry of the walker: polygon transitions, admissible foot
+angles, mass properties from an area density (appendix E of the seed) and the
+ankle / contact-point kinematics while the foot rolls. Units are SI (m, rad, kg,
+kg/m^2).
 
-  --preset NAME   point or one of the seed's 216 fitted feet, SUBJECT-FOOTWEAR-SIDE-MODEL-TRAJECTORY
-                  (e.g. P3-shoes-left-HM-SG; Table 4.2, B.1-B.11); default P2-shoes-left-HMT
-  --list-presets  name, alias and source of every preset; the filters keep the fitted feet that
-                  match all of them (--section-9-2: the 16 feet compared in section 9.2)
+  --preset NAME   point or one of the seed's 216 fitted feet,
+                  SUBJECT-FOOTWEAR-SIDE-MODEL-TRAJECTORY (e.g.
+                  P3-shoes-left-HM-SG; Table 4.2, B.1-B.11); default
+                  P2-shoes-left-HMT
+  --list-presets  name, alias and source of every preset; the filters keep the
+                  fitted feet that match all of them (--section-9-2: the 16 feet
+                  compared in section 9.2)
   --foot FILE     a JSON foot spec (schema: proto/schemas/foot.schema.json)
-  --density RHO   area density in kg/m^2 for mass properties (default for presets: 36.9)
-  --samples N     rolling-kinematics samples over the admissible range (2..100000, default 13)
+  --density RHO   area density in kg/m^2 for mass properties (default for
+                  presets: 36.9)
+  --samples N     rolling-kinematics samples over the admissible range
+                  (2..100000, default 13)
   --json          print the full report as JSON instead of a table
-  --plot-dir DIR  also write foot_shape.{png,svg} (Fig. 3.5a) and ankle_trajectory.{png,svg}
-                  (Fig. 3.5b) into DIR
+  --plot-dir DIR  also write foot_shape.{png,svg} (Fig. 3.5a) and
+                  ankle_trajectory.{png,svg} (Fig. 3.5b) into DIR
   --version       print the version and git revision
 )";
 

@@ -17,13 +17,15 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: cyclopt-giant-swing (--task FILE.json | --preset KIND) [--print-spec]
 
-Optimises the hip torque M_alpha(phi) of the two-segment gymnast on the high bar for one task of
-seed 000, chapter 5, and prints the result JSON (end-of-round values in degrees as in the seed's
-tables, integrals, support values, model integrations, wall time).
+Optimises the hip torque M_alpha(phi) of the two-segment gymnast on the high bar
+for one task of seed 000, chapter 5, and prints the result JSON (end-of-round
+values in degrees as in the seed's tables, integrals, support values, model
+integrations, wall time).
 
-  --task FILE     a JSON task spec (fields: common/cyclopt/io/task_spec_json.hpp)
-  --preset KIND   single_swing, periodic_sequence, accelerating or decelerating with the
-                  seed's settings
+  --task FILE     a JSON task spec (fields:
+                  common/cyclopt/io/task_spec_json.hpp)
+  --preset KIND   single_swing, periodic_sequence, accelerating or decelerating
+                  with the seed's settings
   --print-spec    print the validated spec (with defaults filled in) and exit
   --version       print the version and git revision
 )";

@@ -45,37 +45,49 @@ ServerConfig server_config_from_file(const std::string& path, ServerConfig base 
 ServerConfig server_config_from_args(const std::vector<std::string>& args);
 int effective_workers(const ServerConfig& c);
 
-inline constexpr const char* kServerUsage = R"(usage: cycloptd [--config FILE.json] [--database FILE] [--lcm-url URL] [--workers N]
-                [--max-job-seconds S] [--max-job-iterations N] [--max-job-memory-mb MB]
-                [--max-queued-jobs N] [--max-queued-hours H] [--progress-hz HZ]
+inline constexpr const char* kServerUsage = R"(usage: cycloptd [--config FILE.json] [--database FILE] [--lcm-url URL]
+                [--workers N] [--max-job-seconds S] [--max-job-iterations N]
+                [--max-job-memory-mb MB] [--max-queued-jobs N]
+                [--max-queued-hours H] [--progress-hz HZ]
                 [--executor local|slurm] [--slurm-spool DIR]
 
-The cyclopt job server: queues jobs submitted over LCM, runs them on one worker per core, stores
-every solved point in SQLite (WAL) and publishes progress. SIGTERM / SIGINT stop it gracefully:
-running jobs are checkpointed (their stored points kept) and resume at the next start.
+The cyclopt job server: queues jobs submitted over LCM, runs them on one worker
+per core, stores every solved point in SQLite (WAL) and publishes progress.
+SIGTERM / SIGINT stop it gracefully: running jobs are checkpointed (their stored
+points kept) and resume at the next start.
 
-  --config FILE          JSON file with any of: database, lcm_url, workers, max_job_seconds,
-                         max_job_iterations, max_job_memory_mb, max_queued_jobs,
-                         max_queued_hours, progress_hz, executor, slurm, auth_secret_file,
-                         auth_reads (owner: a key reads only its own jobs, admin keys all;
-                         any: every key reads every job) (flags given after it override it;
-                         auth_secret_file and auth_reads are read from the config file only)
-  --database FILE        results database (default cyclopt.db; created if missing)
-  --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0 (default: LCM's)
+  --config FILE          JSON file with any of: database, lcm_url, workers,
+                         max_job_seconds, max_job_iterations, max_job_memory_mb,
+                         max_queued_jobs, max_queued_hours, progress_hz,
+                         executor, slurm, auth_secret_file, auth_reads (owner: a
+                         key reads only its own jobs, admin keys all; any: every
+                         key reads every job) (flags given after it override it;
+                         auth_secret_file and auth_reads are read from the
+                         config file only)
+  --database FILE        results database (default cyclopt.db; created if
+                         missing)
+  --lcm-url URL          LCM provider, e.g. udpm://239.255.76.67:7667?ttl=0
+                         (default: LCM's)
   --workers N            worker threads, 1..256 (default: number of cores)
-  --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600); a job whose
-                         estimated time exceeds it is rejected at submission
+  --max-job-seconds S    per-job wall-time cap, (0, 604800] (default 3600); a
+                         job whose estimated time exceeds it is rejected at
+                         submission
   --max-job-iterations N per-job iteration cap, 1..1e9 (default 1e7)
-  --max-job-memory-mb MB a job whose estimated peak memory exceeds it is rejected,
-                         [16, 1048576] (default 4096)
-  --max-queued-jobs N    queued jobs per sender (the authenticated key, or for unauthenticated
-                         clients the sending host), 1..1e6 (default 100)
-  --max-queued-hours H   estimated hours of queued jobs per sender, (0, 1e6] (default 168)
-  --progress-hz HZ       progress messages per job and second, [0.1, 100] (default 5)
-  --executor E           local (default: the workers compute the jobs) or slurm (each worker
-                         dispatches its job to Slurm as a batch job of cyclopt-worker; further
-                         settings in the config file's "slurm" object, see docs/service.md)
-  --slurm-spool DIR      directory shared with the cluster nodes (required with slurm)
+  --max-job-memory-mb MB a job whose estimated peak memory exceeds it is
+                         rejected, [16, 1048576] (default 4096)
+  --max-queued-jobs N    queued jobs per sender (the authenticated key, or for
+                         unauthenticated clients the sending host), 1..1e6
+                         (default 100)
+  --max-queued-hours H   estimated hours of queued jobs per sender, (0, 1e6]
+                         (default 168)
+  --progress-hz HZ       progress messages per job and second, [0.1, 100]
+                         (default 5)
+  --executor E           local (default: the workers compute the jobs) or slurm
+                         (each worker dispatches its job to Slurm as a batch job
+                         of cyclopt-worker; further settings in the config
+                         file's "slurm" object, see docs/service.md)
+  --slurm-spool DIR      directory shared with the cluster nodes (required with
+                         slurm)
 Exit codes: 0 clean shutdown, 1 bad usage or config, 2 database or LCM failure.
 )";
 

@@ -14,7 +14,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace cyclopt::cli {
 namespace {
@@ -44,6 +46,26 @@ const std::array<std::pair<const char*, const char*>, 5> kPrograms = {{{"cyclopt
                                                                         {"cyclopt-giant-swing", CYCLOPT_GIANT_SWING_CLI},
                                                                         {"cycloptd", CYCLOPTD},
                                                                         {"cyclopt-worker", CYCLOPT_WORKER}}};
+
+// A newcomer reads --help in an 80-column terminal: no line of any program's help (and of the
+// subcommands' own) is wider.
+TEST(ProgramConventions, EveryHelpFitsEightyColumns) {
+  std::vector<std::string> commands;
+  for (const auto& [name, path] : kPrograms) commands.push_back(std::string(path) + " --help");
+  commands.push_back(std::string(CYCLOPT_FOOT_CLI) + " fit --help");
+  commands.push_back(std::string(CYCLOPT_FOOT_CLI) + " synth --help");
+  for (const std::string& command : commands) {
+    const Outcome r = run(command);
+    EXPECT_EQ(r.exit_code, kExitOk) << command;
+    EXPECT_GT(r.out.size(), 40u) << command;
+    std::istringstream lines(r.out);
+    int number = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++number;
+      EXPECT_LE(line.size(), 80u) << command << ", line " << number << ": " << line;
+    }
+  }
+}
 
 TEST(ProgramConventions, EveryProgramPrintsItsVersionWithTheGitRevision) {
   const Outcome git = run("git -C " CYCLOPT_SOURCE_DIR " rev-parse --short=7 HEAD");

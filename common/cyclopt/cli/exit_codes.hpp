@@ -15,8 +15,9 @@ enum ExitCode : int {
 
 // The table as the programs' --help prints it.
 inline constexpr const char* kExitCodeTable =
-    "Exit codes (all cyclopt programs): 0 ok; 1 bad usage; 2 invalid input, not found, job failed or\n"
-    "cancelled; 3 no answer from the server in time; 4 file, database or LCM error; 5 job incomplete\n"
-    "(some required points missing or not converged).\n";
+    "Exit codes (all cyclopt programs): 0 ok; 1 bad usage; 2 invalid input, not\n"
+    "found, job failed or cancelled; 3 no answer from the server in time; 4 file,\n"
+    "database or LCM error; 5 job incomplete (some required points missing or not\n"
+    "converged).\n";
 
 }  // namespace cyclopt::cli
