@@ -40,14 +40,18 @@ netns_loopback_multicast
 URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 export LCM_DEFAULT_URL=$URL
 WORK=$(mktemp -d /tmp/cyclopt-soak.XXXXXX)
-SERVER="" KILLED=0 STARTS=0 CRASHES=0 EPISODES=0 FUZZ_DATAGRAMS=0 BAD_MESSAGES=0 PEAK_KB=0
+SERVER="" KEEP=0 KILLED=0 STARTS=0 CRASHES=0 EPISODES=0 FUZZ_DATAGRAMS=0 BAD_MESSAGES=0 PEAK_KB=0
 cleanup() {
   touch "$WORK/stop"
   [ -n "$SERVER" ] && kill -9 "$SERVER" 2>/dev/null
   jobs -p | xargs -r kill 2>/dev/null
   wait 2>/dev/null
+  if [ "$KEEP" = 1 ]; then
+    cp "$WORK/disk/results.db" "$WORK/soak.db" 2>/dev/null
+    echo "kept for inspection: $WORK (soak.db, reference.db, server.log, client*.log)"
+  fi
   umount "$WORK/disk" 2>/dev/null
-  rm -rf "$WORK"
+  [ "$KEEP" = 1 ] || rm -rf "$WORK"
 }
 trap cleanup EXIT
 FAILURES=0
@@ -56,7 +60,7 @@ check() {  # check CONDITION-TEXT COMMAND...: counts and prints a failed invaria
   shift
   if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; FAILURES=$((FAILURES + 1)); fi
 }
-fail() { echo "FAIL: $*"; tail -30 "$WORK/server.log" 2>/dev/null; exit 1; }
+fail() { echo "FAIL: $*"; tail -30 "$WORK/server.log" 2>/dev/null; KEEP=1; exit 1; }
 sql() { sqlite3 -batch -noheader -cmd ".timeout 5000" "$@"; }
 echo "seed $SEED (replay: $(basename "$0") ... $DURATION $SEED)"
 RANDOM=$SEED
@@ -322,6 +326,7 @@ check "the server never stopped by itself ($CRASHES crashes; $KILLED kills by th
 if [ "$FAILURES" -gt 0 ]; then
   sql "$DB" "ATTACH '$REF' AS ref; SELECT j.id, j.request_id, j.state, j.attempts, j.error FROM jobs j WHERE j.state NOT IN ('done', 'failed', 'incomplete', 'cancelled') OR j.state <> coalesce((SELECT r.state FROM ref.jobs r WHERE r.request_id = substr(j.request_id, 1, instr(j.request_id, '.') - 1)), j.state) LIMIT 20"
   echo "FAIL: $FAILURES invariant(s) (seed $SEED)"
+  KEEP=1
   exit 1
 fi
 echo PASS
