@@ -5,7 +5,8 @@
 #                                           "-n -m") within a timeout of SECONDS; returns when
 #                                           already inside; exits 77 when the namespaces cannot be
 #                                           made (needs root / CAP_SYS_ADMIN)
-#   netns_loopback_multicast                lo up, 224.0.0.0/4 routed to it (inside only)
+#   netns_loopback_multicast                lo up, 224.0.0.0/4 routed to it; refuses to go on
+#                                           unless multicast stays on this namespace's loopback
 #   wait_for SECONDS COMMAND...             polls COMMAND every 0.05 s; fails after SECONDS
 
 netns_enter() {
@@ -28,6 +29,7 @@ netns_loopback_multicast() {
   ip link set lo up
   ip route add 224.0.0.0/4 dev lo
   ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+  [ "$(ip -o link show | grep -vc ': lo:')" -eq 0 ] || { echo "FAIL: the namespace has other interfaces"; exit 1; }
 }
 
 wait_for() {
