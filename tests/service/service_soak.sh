@@ -68,19 +68,23 @@ RANDOM=$SEED
 # The specs: the smallest of every kind (tests/service/test_golden_jobs.cpp), point feet at P = 25.
 mkdir -p "$WORK/specs" "$WORK/keys" "$WORK/disk"
 spec() { printf '%s\n' "$2" >"$WORK/specs/$1.json"; }
-WALKER='"scene": "walker", "foot": "point", "points": 25, "solver": {"max_iterations": 600}'
-for v in 0.9 1.0 1.1; do spec "evaluate_${v/./}" "{$WALKER, \"task\": \"evaluate\", \"speed\": $v}"; done
-spec optimise "{$WALKER, \"task\": \"optimise\", \"speed\": 1.0}"
-spec multistart "{$WALKER, \"task\": \"multistart\", \"speed\": 1.0, \"multistart\": {\"starts\": 3, \"seed\": 2, \"scale\": 0.05}}"
-spec continuation "{$WALKER, \"task\": \"continuation\", \"speeds\": \"1.0:0.1:1.2\"}"
-spec sweep "{$WALKER, \"task\": \"sweep\", \"speeds\": \"0.9:0.1:1.1\", \"multistart\": {\"starts\": 2, \"seed\": 3, \"scale\": 0.02}, \"continuation\": {\"seed_speeds\": 1.0}}"
-spec sensitivity "{$WALKER, \"task\": \"sensitivity\", \"speed\": 1.0, \"parameters\": [\"m_T\"], \"steps\": 1}"
+spec evaluate_09 '{"scene": "walker", "task": "evaluate", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 0.9}'
+spec evaluate_10 '{"scene": "walker", "task": "evaluate", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 1.0}'
+spec evaluate_11 '{"scene": "walker", "task": "evaluate", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 1.1}'
+spec optimise '{"scene": "walker", "task": "optimise", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 1.0}'
+spec multistart '{"scene": "walker", "task": "multistart", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 1.0,
+  "multistart": {"starts": 3, "seed": 2, "scale": 0.05}}'
+spec continuation '{"scene": "walker", "task": "continuation", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speeds": "1.0:0.1:1.2"}'
+spec sweep '{"scene": "walker", "task": "sweep", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speeds": "0.9:0.1:1.1",
+  "multistart": {"starts": 2, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}'
+spec sensitivity '{"scene": "walker", "task": "sensitivity", "foot": "point", "points": 25, "solver": {"max_iterations": 600}, "speed": 1.0,
+  "parameters": ["m_T"], "steps": 1}'
 spec foot_sweep '{"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "samples": 5, "sweep": {"parameter": "density", "values": "20:20:60"}}'
 # Slowed down (50 ms a point, ~2 s) so that kills and full disks meet it running.
 spec foot_sweep_slow '{"scene": "walker", "task": "foot_sweep", "foot": "P2-shoes-left-HMT", "samples": 20, "point_delay_ms": 50, "sweep": {"parameter": "density", "values": "1:1:40"}}'
 spec giant_swing '{"scene": "giant_swing", "task": "giant_swing", "motion": "single", "method": "bezier", "options": {"free_coefficients": 4, "steps": 50}}'
-spec foot_comparison "{$WALKER, \"task\": \"foot_comparison\", \"speeds\": \"1.0:0.1:1.1\", \"points\": 40, \"feet\": [\"P1-barefoot-left-HM\"], \"multistart\": {\"starts\": 2, \"seeds\": [3, 4], \"scale\": 0.02}, \"continuation\": {\"seed_speeds\": 1.0}}"
-sed -i 's/"foot": "point", //' "$WORK/specs/foot_comparison.json"
+spec foot_comparison '{"scene": "walker", "task": "foot_comparison", "solver": {"max_iterations": 600}, "speeds": "1.0:0.1:1.1",
+  "points": 40, "feet": ["P1-barefoot-left-HM"], "multistart": {"starts": 2, "seeds": [3, 4], "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}'
 spec foot_design '{"scene": "walker", "task": "foot_design", "foot": "P2-shoes-left-HMT", "speeds": "2.2:0.1:2.3", "densities": [10], "design_speed": 2.3, "points": 40, "solver": {"max_iterations": 500}, "multistart": {"starts": 2, "seed": 2, "scale": 0.02}, "sweep_starts": 1, "foot_scale": 0, "continuation": {"seed_speeds": 2.3, "min_trust_region": 0.05, "corrector_max_iterations": 60}}'
 "$CYCLOPT_FOOT" synth --preset P1-shoes-left-HMT --trials 2 --noise 0.0005 --out "$WORK/trials" >/dev/null
 "$CYCLOPT_FOOT" fit "$WORK/trials/trial1.trc" "$WORK/trials/trial2.trc" --job-spec "$WORK/specs/foot_fit.json" >/dev/null
@@ -127,7 +131,8 @@ for s in "${SPECS[@]}"; do "$CYCLOPT" submit --spec "$WORK/specs/$s.json" --requ
 wait_for 300 finished "$REF" || fail "reference: not finished in 300 s: $(sql "$REF" "SELECT request_id, state FROM jobs")"
 stop_server TERM
 REF_PEAK_KB=$PEAK_KB PEAK_KB=0
-echo "$(($(date +%s) - T0)) s, peak RSS $((REF_PEAK_KB / 1024)) MiB: $(sql "$REF" "SELECT group_concat(request_id || ' ' || state || ' ' || (SELECT count(*) FROM solutions s WHERE s.job_id = j.id), ', ') FROM jobs j")"
+echo "$(($(date +%s) - T0)) s, peak RSS $((REF_PEAK_KB / 1024)) MiB; spec: state, points, run time"
+echo "  $(sql "$REF" "SELECT group_concat(printf('%s: %s, %d, %.1f s', request_id, state, (SELECT count(*) FROM solutions s WHERE s.job_id = j.id), run_seconds), '; ') FROM jobs j")"
 RSS_BOUND_KB=$((2 * REF_PEAK_KB + 65536))
 
 # A client: submits a random spec under a fresh request id (resent with the same id when no answer
