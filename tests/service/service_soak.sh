@@ -23,7 +23,8 @@
 # printed at the start; timing still varies, so a replay repeats the decisions, not the interleaving.
 #
 # usage: service_soak.sh CYCLOPTD CYCLOPT CYCLOPT_FOOT WIRE_FUZZ BAD_SENDER [SECONDS [SEED]]
-#   SECONDS: length of the fault phase (default 120); SEED: default from the clock
+#   SECONDS: length of the fault phase (default 120); SEED: default from the clock;
+#   CYCLOPT_SOAK_KEEP=1 keeps the databases and logs of a run that passed, too
 # exit: 0 pass, 1 fail, 77 skipped (no permission to create the namespaces)
 set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -40,7 +41,7 @@ netns_loopback_multicast
 URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 export LCM_DEFAULT_URL=$URL
 WORK=$(mktemp -d /tmp/cyclopt-soak.XXXXXX)
-SERVER="" KEEP=0 KILLED=0 STARTS=0 CRASHES=0 EPISODES=0 FUZZ_DATAGRAMS=0 BAD_MESSAGES=0 PEAK_KB=0
+SERVER="" KEEP=${CYCLOPT_SOAK_KEEP:-0} KILLED=0 STARTS=0 CRASHES=0 EPISODES=0 FUZZ_DATAGRAMS=0 BAD_MESSAGES=0 PEAK_KB=0
 cleanup() {
   touch "$WORK/stop"
   [ -n "$SERVER" ] && kill -9 "$SERVER" 2>/dev/null
@@ -154,10 +155,10 @@ client() {
       out=$(CYCLOPT_KEY_FILE=$key timeout 30 "$CYCLOPT" --timeout 5 submit --spec "$WORK/specs/$s.json" --request-id "$rid" 2>&1) && rc=0 || rc=$?
       echo "$rid try $try exit $rc: $out" >>"$WORK/client$k.log"
       [ "$rc" -eq 0 ] && id=$(echo "$out" | awk '/^job [0-9]+ / {print $2}') && break
-      [ "$rc" -eq 3 ] || break  # rejected (queue, signature, disk): a new request next time
+      [ "$rc" -eq 3 ] || break  # refused (signature, full disk): a new request next time
       sleep 1
     done
-    [ -n "$id" ] || continue
+    [ -n "$id" ] || { sleep 1; continue; }
     echo "$rid $id" >>"$WORK/accepted.txt"
     case $((RANDOM % 10)) in
       0) CYCLOPT_KEY_FILE=$key timeout 30 "$CYCLOPT" --timeout 5 cancel "$id" >>"$WORK/client$k.log" 2>&1 &&
@@ -275,7 +276,8 @@ touch "$WORK/cancelled.txt" "$WORK/forger.log"
 SUBMITTED=$(cat "$WORK"/client*.log | grep -c ' try 1 ' || true)
 echo "seed $SEED, fault phase $DURATION s, $CLIENTS clients + forger"
 echo "requests: $SUBMITTED submitted, $(wc -l <"$WORK/accepted.txt") accepted (given an id), cancel requests $(wc -l <"$WORK/cancelled.txt")"
-echo "refused: signature $(cat "$WORK"/client*.log | grep -c 'exit 2: .*signature rejected' || true), other $(cat "$WORK"/client*.log | grep -v 'signature rejected' | grep -c 'exit [124]:' || true), no answer after 3 tries $(cat "$WORK"/client*.log | grep -c ' try 3 exit 3' || true)"
+echo "no answer after 3 tries: $(cat "$WORK"/client*.log | grep -c ' try 3 exit 3' || true); refused, by reason (numbers masked):"
+{ grep -h ' exit [124]: ' "$WORK"/client*.log || true; } | sed 's/^.* exit \([124]\): /exit \1: /; s/[0-9][0-9.]*/N/g' | cut -c1-150 | sort | uniq -c | sort -rn | head -5
 echo "jobs in the database by state: $(sql "$DB" "SELECT group_concat(state || ' ' || n, ', ') FROM (SELECT state, count(*) n FROM jobs GROUP BY state)")"
 echo "jobs by kind: $(sql "$DB" "SELECT group_concat(task || ' ' || n, ', ') FROM (SELECT task, count(*) n FROM jobs GROUP BY task)")"
 echo "attempts: $(sql "$DB" "SELECT sum(attempts) FROM jobs") over $(sql "$DB" "SELECT count(*) FROM jobs") jobs, max $(sql "$DB" "SELECT max(attempts) FROM jobs"); points stored $(sql "$DB" "SELECT count(*) FROM solutions")"
