@@ -8,20 +8,13 @@
 # exit: 0 pass, 1 fail, 77 skipped (no permission to create a network namespace)
 set -euo pipefail
 
-if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 170 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
-fi
+HERE=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=netns.sh
+source "$HERE/netns.sh"
+netns_enter 170 "-n" "$0" "$@"
 
 CYCLOPTD=$1 CYCLOPT=$2 BAD_SENDER=$3 LOG_CHANNELS=$4 README=$5
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-# Refuse to run unless multicast really stays on this namespace's loopback.
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
-[ "$(ip -o link show | grep -vc ': lo:')" -eq 0 ] || { echo "FAIL: namespace has other interfaces"; exit 1; }
+netns_loopback_multicast
 
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 URL=$LCM_DEFAULT_URL
@@ -37,11 +30,6 @@ trap cleanup EXIT
 fail() { echo "FAIL: $*"; [ -f "$WORK/server.log" ] && tail -20 "$WORK/server.log"; exit 1; }
 sql() { sqlite3 -batch -noheader "$DB" "$1"; }
 now() { date +%s.%N; }
-# wait_for SECONDS COMMAND...: polls until COMMAND succeeds.
-wait_for() {
-  local deadline=$(( $(date +%s) + $1 )); shift
-  until "$@"; do [ "$(date +%s)" -lt "$deadline" ] || return 1; sleep 0.05; done
-}
 # Settings come from a config file (flags after it would override it).
 printf '{"database": "%s", "lcm_url": "%s", "workers": 2, "max_job_seconds": 120, "progress_hz": 5}' "$DB" "$URL" >"$WORK/cycloptd.json"
 start_server() {

@@ -16,27 +16,18 @@
 #   FOOT (default point) and SPEEDS (default 0.6:0.1:1.4): the sweep's
 # exit: 0 pass, 1 fail, 77 skipped (no network namespace)
 set -euo pipefail
-if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 "${CYCLOPT_RESUME_TIMEOUT:-900}" unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
-fi
+HERE=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=netns.sh
+source "$HERE/netns.sh"
+netns_enter "${CYCLOPT_RESUME_TIMEOUT:-900}" "-n" "$0" "$@"
 CYCLOPTD=$1 CYCLOPT=$2 STARTS=${3:-4} SPREAD=${4:-0} FOOT=${5:-point} SPEEDS=${6:-0.6:0.1:1.4}
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+netns_loopback_multicast
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-resume.XXXXXX)
 SERVER=""
 cleanup() { [ -n "$SERVER" ] && kill -9 "$SERVER" 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"; }
 trap cleanup EXIT
 fail() { echo "FAIL: $*"; tail -20 "$WORK"/server-*.log 2>/dev/null; exit 1; }
-wait_for() {
-  local deadline=$(( $(date +%s) + $1 )); shift
-  until "$@"; do [ "$(date +%s)" -lt "$deadline" ] || return 1; sleep 0.05; done
-}
 start_server() {  # start_server DB
   # shellcheck disable=SC2086  # CYCLOPTD_ARGS: further cycloptd flags, e.g. higher job caps for a long sweep
   "$CYCLOPTD" --database "$1" --workers 1 ${CYCLOPTD_ARGS:-} >>"$WORK/server-$(basename "$1").log" 2>&1 &

@@ -10,19 +10,13 @@
 # exit: 0 pass, 1 fail, 77 skipped (no permission to create a network namespace)
 set -euo pipefail
 
-if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 100 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
-fi
+HERE=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=netns.sh
+source "$HERE/netns.sh"
+netns_enter 100 "-n" "$0" "$@"
 
 CYCLOPTD=$1 CYCLOPT=$2 WIRE_FUZZ=$3 COUNT=$4
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
-[ "$(ip -o link show | grep -vc ': lo:')" -eq 0 ] || { echo "FAIL: namespace has other interfaces"; exit 1; }
+netns_loopback_multicast
 
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-wire-fuzz.XXXXXX)

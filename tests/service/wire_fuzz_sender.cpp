@@ -2,9 +2,10 @@
 // datagrams straight to a multicast group (plain UDP, not liblcm, so that headers can lie):
 // mutated encodings of every message type in LC02 datagrams on their channels, and LC03
 // fragment sequences with lying headers.
-// usage: cyclopt-wire-fuzz GROUP PORT COUNT [--only-liblcm-killer]
+// usage: cyclopt-wire-fuzz GROUP PORT COUNT [--only-liblcm-killer | --seed N]
 //   prints the number of datagrams sent; --only-liblcm-killer sends just the one datagram that
-//   brings down liblcm 1.3.1's receiver (fragment offset + length wrapping past 2^32).
+//   brings down liblcm 1.3.1's receiver (fragment offset + length wrapping past 2^32); --seed
+//   seeds the mutations (default 1919), so that a run that found something can be replayed.
 #include "cyclopt_channels.hpp"
 #include "wire_mutations.hpp"
 
@@ -23,6 +24,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 namespace {
@@ -45,7 +47,7 @@ constexpr std::int64_t kForeignJob = 900000001;
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: cyclopt-wire-fuzz GROUP PORT COUNT [--only-liblcm-killer]\n");
+    std::fprintf(stderr, "usage: cyclopt-wire-fuzz GROUP PORT COUNT [--only-liblcm-killer | --seed N]\n");
     return 1;
   }
   const int fd = socket(AF_INET, SOCK_DGRAM, 0);
@@ -61,7 +63,8 @@ int main(int argc, char** argv) {
     if (sendto(fd, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) >= 0) ++sent;
     if (sent % 64 == 0) std::this_thread::sleep_for(std::chrono::microseconds(500));  // let receivers keep up
   };
-  std::mt19937_64 rng(1919);
+  const bool seeded = argc > 5 && std::string(argv[4]) == "--seed";
+  std::mt19937_64 rng(seeded ? std::strtoull(argv[5], nullptr, 10) : 1919);
   if (argc > 4 && std::string(argv[4]) == "--only-liblcm-killer") {
     const auto lies = cyclopt::testing::lying_fragments("CYCLOPT_SUBMIT", std::string(60, 'x'), 1, rng);
     send(lies.back()[0]);
