@@ -1,5 +1,6 @@
 #include "dashboard_server.hpp"
 
+#include "message_page.hpp"
 #include "service_client.hpp"
 #include "store_rows.hpp"
 #include "web_assets.hpp"
@@ -70,8 +71,7 @@ std::string sse(const char* event, const nlohmann::json& data) {
 void error_page(httplib::Response& res, int status, const std::string& message) {
   res.status = status;
   res.set_header("Content-Security-Policy", kPagePolicy);
-  res.set_content("<!DOCTYPE html><meta charset=\"utf-8\"><title>cyclopt</title><p>" + plot::html_escape(message) + "</p>",
-                  "text/html; charset=utf-8");
+  res.set_content(message_page(message), "text/html; charset=utf-8");
 }
 
 }  // namespace
