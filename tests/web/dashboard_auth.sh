@@ -22,7 +22,7 @@ export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-dashboard-auth.XXXXXX)
 SERVER='' WEB=''
 trap 'kill $WEB $SERVER 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"' EXIT
-fail() { echo "FAIL: $*"; tail -5 "$WORK/server.log" "$WORK/web.log"; exit 1; }
+fail() { echo "FAIL: $*"; tail -n 5 "$WORK/server.log" "$WORK/web.log"; exit 1; }
 umask 077
 printf 'alice alice-secret-0123456789\nbob bob-secret-0123456789ab\nroot root-secret-0123456789ab admin\n' >"$WORK/keys"
 for k in alice bob root; do grep "^$k " "$WORK/keys" >"$WORK/$k.key"; done

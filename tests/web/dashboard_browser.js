@@ -23,7 +23,7 @@ async function main() {
   const errors = [];
   const open = async (url) => {
     const page = await browser.newPage();
-    await page.setViewport({ width: 1400, height: 900 });
+    await page.setViewport({ width: 1800, height: 900 });
     page.on("dialog", async (d) => { dialogs.push(d.message()); await d.dismiss(); });
     page.on("pageerror", (e) => errors.push(String(e)));
     await page.goto(url, { waitUntil: "domcontentloaded" });
@@ -75,10 +75,15 @@ async function main() {
     await slow.waitForFunction(() => document.getElementById("job-summary").dataset.state === "running", { timeout: 10000 });
     const title = await slow.$eval("#job-title", (e) => e.textContent);
     check(title === "Job 1: " + xssName, "job 1's title shows its name as text");
+    // A hidden tab pauses its stream (docs/dashboard.md): shown again, the fleet catches up.
+    await fleet.bringToFront();
+    await fleet.waitForFunction(() => document.getElementById("connection").textContent === "live", { timeout: 5000 });
     await fleet.screenshot({ path: path.join(outDir, "dashboard_fleet.png"), fullPage: false });
+    await slow.bringToFront();
     await slow.click("#cancel");
     await slow.waitForFunction(() => document.getElementById("job-summary").dataset.state === "cancelled", { timeout: 15000 });
     check(true, "the cancel button cancelled job 1: " + await slow.$eval("#cancel-answer", (e) => e.textContent));
+    await fleet.bringToFront();
     await fleet.waitForFunction(() => document.querySelector('#fleet tbody tr[data-id="1"]').className === "cancelled",
                                 { timeout: 5000 });
     check(true, "the fleet shows job 1 cancelled");

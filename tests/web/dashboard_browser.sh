@@ -28,7 +28,7 @@ export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-dashboard.XXXXXX)
 SERVER='' WEB=''
 trap 'kill $WEB $SERVER 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"' EXIT
-fail() { echo "FAIL: $*"; tail -5 "$WORK/server.log" "$WORK/web.log"; exit 1; }
+fail() { echo "FAIL: $*"; tail -n 5 "$WORK/server.log" "$WORK/web.log"; exit 1; }
 printf '{"database": "%s/results.db", "workers": 2, "progress_hz": 5}' "$WORK" >"$WORK/cycloptd.json"
 "$CYCLOPTD" --config "$WORK/cycloptd.json" >"$WORK/server.log" 2>&1 &
 SERVER=$!

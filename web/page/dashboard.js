@@ -50,15 +50,33 @@ function noteShown(element, progressUs) {
   if (window.cycloptShownLatencyMs.length > 1000) window.cycloptShownLatencyMs.shift();
 }
 
-// An event stream whose connection state shows in the header.
-function stream(url, handlers) {
-  const source = new EventSource(url);
+// An event stream whose connection state shows in the header. Each stream starts with the full
+// state, and `onOpen` runs before its first event (also after a reconnect), so a view restarts
+// from it. A hidden tab closes its stream and opens it again when shown: a browser keeps at most
+// six HTTP/1.1 connections to one server, and every open stream holds one.
+function stream(url, handlers, onOpen) {
   const state = document.getElementById("connection");
-  source.onopen = () => { state.textContent = "live"; };
-  source.onerror = () => { state.textContent = "reconnecting ..."; };
-  for (const [name, handler] of Object.entries(handlers))
-    source.addEventListener(name, (e) => handler(JSON.parse(e.data)));
-  return source;
+  let source = null;
+  const connect = () => {
+    source = new EventSource(url);
+    source.onopen = () => {
+      state.textContent = "live";
+      if (onOpen) onOpen();
+    };
+    source.onerror = () => { state.textContent = "reconnecting ..."; };
+    for (const [name, handler] of Object.entries(handlers))
+      source.addEventListener(name, (e) => handler(JSON.parse(e.data)));
+  };
+  document.addEventListener("visibilitychange", () => {
+    if (document.hidden && source) {
+      source.close();
+      source = null;
+      state.textContent = "paused while the tab is hidden";
+    } else if (!document.hidden && !source) {
+      connect();
+    }
+  });
+  connect();
 }
 
 // --- Fleet ---------------------------------------------------------------------------------------
@@ -70,7 +88,7 @@ const fleetColumns = [
   { key: "foot", title: "Foot", text: (r) => r.foot || "-" },
   { key: "state", title: "State", cls: "state", text: (r) => r.state },
   { key: "percent", title: "Progress", cell: progressCell },
-  { key: "phase", title: "Phase", text: (r) => r.phase || "-" },
+  { key: "phase", title: "Phase", cls: "phase", text: (r) => r.phase || "-" },
   { key: "eta_seconds", title: "ETA", number: true, text: (r) => (r.state === "running" ? durationText(r.eta_seconds) : "-") },
   { key: "best_objective", title: "Best", number: true, text: (r) => numberText(r.best_objective) },
   { key: "run_seconds", title: "Run", number: true, text: (r) => (r.state === "queued" ? "-" : durationText(r.run_seconds)) },
@@ -155,6 +173,7 @@ function fleetView(main) {
       else if (c.key === "id") td.appendChild(el("a", { href: "/job/" + r.id }, r.id));
       else if (c.key === "name") td.appendChild(el("a", { href: "/job/" + r.id, title: r.name }, c.text(r)));
       else td.textContent = c.text(r);
+      if (c.cls === "phase" || c.cls === "why") td.title = td.textContent;  // cut to the column; whole on hover
       tr.appendChild(td);
     }
     noteShown(tr, r.progress_us);
@@ -321,6 +340,12 @@ function jobView(main, id) {
     resultBox.dataset.points = points.length;
   }
 
+  const restart = () => {
+    curves.clear();
+    points.length = 0;
+    events.replaceChildren();
+    samples.key = "";
+  };
   stream("/api/job/" + id + "/events", {
     job: (row) => {
       if (!row) { summary.textContent = "not in the database (yet)"; return; }
@@ -367,7 +392,7 @@ function jobView(main, id) {
         events.appendChild(tr);
       }
     },
-  });
+  }, restart);
 }
 
 // --- route ---------------------------------------------------------------------------------------
