@@ -1,5 +1,6 @@
 #include "dashboard_server.hpp"
 
+#include "job_rows_cache.hpp"
 #include "message_page.hpp"
 #include "service_client.hpp"
 #include "store_rows.hpp"
@@ -16,6 +17,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <set>
 
 namespace cyclopt::web {
@@ -77,11 +80,16 @@ void error_page(httplib::Response& res, int status, const std::string& message) 
 }  // namespace
 
 struct DashboardServer::Impl {
+  Impl(const DashboardConfig& c, storage::ResultStore& s, LiveFleet& f, std::optional<wire::KeyRing> k)
+      : config(c), store(s), fleet(f), keys(std::move(k)) {}
   DashboardConfig config;
   storage::ResultStore& store;
   LiveFleet& fleet;
   std::optional<wire::KeyRing> keys;
   httplib::Server http;
+  std::mutex reports_mutex;
+  std::map<std::int64_t, std::string> final_reports;
+  JobRowsCache job_rows{store, {{"curves", [](const nlohmann::json& r) { return r; }}, {"solutions", point_json}, {"events", event_json}}};
 
   std::optional<Viewer> viewer(const httplib::Request& req) const {
     if (!keys) return Viewer{};
@@ -186,7 +194,7 @@ struct DashboardServer::Impl {
     res.set_chunked_content_provider("text/event-stream", [this, id](std::size_t, httplib::DataSink& sink) {
       std::uint64_t global = 0, seen = 0;  // the fleet's newest change, the job's last one sent
       std::size_t points = 0, events = 0, curves = 0;
-      std::string row_text, points_mark, events_mark;
+      std::string row_text;
       std::int64_t progress_us = -1;
       auto last_write = std::chrono::steady_clock::now();
       const auto send = [&](const char* event, const nlohmann::json& data) {
@@ -194,14 +202,12 @@ struct DashboardServer::Impl {
         const std::string text = sse(event, data);
         return sink.write(text.data(), text.size());
       };
-      // Rows of `what` stored after the `count` sent, converted by `as`; sent as `event`.
-      const auto send_new = [&](const char* what, const char* event, std::size_t& count, auto as) {
-        nlohmann::json fresh = nlohmann::json::array();
-        for (const nlohmann::json& r : rows_of(what, id, static_cast<int>(count))) fresh.push_back(as(r));
+      // Rows of `what` stored after the `count` sent; sent as `event`.
+      const auto send_new = [&](const char* what, const char* event, std::size_t& count, const std::string& mark) {
+        const nlohmann::json fresh = job_rows.rows_after(id, what, count, mark);
         count += fresh.size();
         return fresh.empty() || send(event, fresh);
       };
-      const auto same = [](const nlohmann::json& r) { return r; };
       while (!fleet.stopped()) {
         const LiveFleet::JobView view = fleet.job(id);
         if (seen == 0 || view.seq > seen) {
@@ -210,17 +216,13 @@ struct DashboardServer::Impl {
           if (row.dump() != row_text && !send("job", row)) return false;
           row_text = row.dump();
           // The database is read only when the row or the live message says something new is there.
-          const std::string new_points_mark = std::to_string(row.value("points_stored", 0)) + "/" +
-                                              std::to_string(view.progress ? view.progress->points_done : 0);
-          if (new_points_mark != points_mark) {
-            points_mark = new_points_mark;
-            if (!send_new("curves", "curves", curves, same) || !send_new("solutions", "points", points, point_json)) return false;
-          }
-          const std::string new_events_mark = row.is_null() ? "" : row["state"].dump() + row["phase"].dump() + row["cancel_requested"].dump();
-          if (new_events_mark != events_mark) {
-            events_mark = new_events_mark;
-            if (!send_new("events", "events", events, event_json)) return false;
-          }
+          const std::string state = row.is_null() ? "" : row["state"].dump();
+          const std::string points_mark = state + std::to_string(row.value("points_stored", 0)) + "/" +
+                                          std::to_string(view.progress ? view.progress->points_done : 0);
+          const std::string events_mark = row.is_null() ? "" : state + row["phase"].dump() + row["cancel_requested"].dump();
+          if (!send_new("curves", "curves", curves, points_mark) || !send_new("solutions", "points", points, points_mark) ||
+              !send_new("events", "events", events, events_mark))
+            return false;
           if (view.progress && view.progress->timestamp_us != progress_us) {
             progress_us = view.progress->timestamp_us;
             if (!send("progress", progress_json(*view.progress))) return false;
@@ -241,7 +243,19 @@ struct DashboardServer::Impl {
     const auto asked = job_request(req, res);
     if (!asked) return;
     res.set_header("Content-Security-Policy", "default-src 'none'; style-src 'unsafe-inline'; img-src data:; frame-ancestors 'self'");
-    res.set_content(plot::to_html(plot::job_report(job_document(asked->second))), "text/html; charset=utf-8");
+    res.set_content(report_html(asked->second), "text/html; charset=utf-8");
+  }
+
+  // A report takes a second or more to draw: one at a time, and a finished job's (which no longer
+  // changes) drawn once for every page that shows it.
+  std::string report_html(std::int64_t id) {
+    std::lock_guard lock(reports_mutex);
+    if (const auto it = final_reports.find(id); it != final_reports.end()) return it->second;
+    const std::optional<storage::JobRecord> job = store.job(id);
+    const bool final = job && storage::is_final(job->state);
+    std::string html = plot::to_html(plot::job_report(job_document(id)));
+    if (final) final_reports[id] = html;
+    return html;
   }
 
   void export_job(const httplib::Request& req, httplib::Response& res) {
@@ -276,11 +290,18 @@ struct DashboardServer::Impl {
 
 DashboardServer::DashboardServer(const DashboardConfig& config, storage::ResultStore& store, LiveFleet& fleet,
                                  std::optional<wire::KeyRing> keys)
-    : impl_(new Impl{config, store, fleet, std::move(keys), {}}) {
+    : impl_(std::make_unique<Impl>(config, store, fleet, std::move(keys))) {
   Impl& s = *impl_;
   // Each open page holds one connection (its event stream): room for many pages.
   s.http.new_task_queue = [] { return new httplib::ThreadPool(64); };
   s.http.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Referrer-Policy", "no-referrer"}});
+  // Debian's cpp-httplib compresses every text response the browser accepts so, brotli at its
+  // slowest quality: a report of a few MB cost seconds of CPU per request. Pages come over loopback
+  // or a tunnel; they go uncompressed. (The Request is httplib's own, writable, object.)
+  s.http.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+    const_cast<httplib::Request&>(req).headers.erase("Accept-Encoding");
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   const auto route = [&s](void (Impl::*handler)(const httplib::Request&, httplib::Response&)) {
     return [&s, handler](const httplib::Request& req, httplib::Response& res) {
       try {
