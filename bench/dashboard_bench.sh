@@ -43,30 +43,35 @@ echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 # 1: the fleet page with 200 jobs (one running, 199 queued behind it).
 start
-echo '{"scene": "walker", "task": "foot_sweep", "name": "fleet filler", "foot": "P2-shoes-left-HMT", "point_delay_ms": 500,
+echo '{"scene": "walker", "task": "foot_sweep", "name": "filler", "foot": "P2-shoes-left-HMT", "point_delay_ms": 500,
   "sweep": {"parameter": "density", "values": "1:1:200"}}' >"$WORK/filler.json"
 for i in $(seq 200); do "$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "filler-$i" >/dev/null; done
 sleep 1.5
 node "$HERE/dashboard_bench.js" fleet "$URL" 200 5
 
-# 2: a point-foot sweep alone and with 10 open pages of it, alternating.
+# 2: a point-foot sweep alone and with 10 open pages of it, alternating. The sweep waits in the
+# queue behind a gate job until the pages are loaded (the browser's start-up is not the sweep's).
 start
 echo '{"scene": "walker", "task": "sweep", "name": "measured sweep", "foot": "point",
-  "speeds": "0.8:0.01:1.4", "multistart": {"starts": 4, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}' >"$WORK/sweep.json"
+  "speeds": "0.8:0.005:1.4", "multistart": {"starts": 4, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}' >"$WORK/sweep.json"
 for round in $(seq "$ROUNDS"); do
   for pages in 0 10; do
+    gate=$("$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "gate-$round-$pages" | awk '{ print $2 }')
     id=$("$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id "sweep-$round-$pages" | awk '{ print $2 }')
-    web0=$(cpu_seconds $WEB)
+    : >"$WORK/pages.txt"
     if [ "$pages" -gt 0 ]; then
       node "$HERE/dashboard_bench.js" pages "$URL" "$id" "$pages" >"$WORK/pages.txt" &
       BROWSER=$!
+      for _ in $(seq 600); do grep -q "pages ready" "$WORK/pages.txt" && break; sleep 0.1; done
     fi
+    web0=$(cpu_seconds $WEB)
+    "$CYCLOPT" cancel "$gate" >/dev/null
     "$CYCLOPT" watch "$id" >/dev/null 2>&1 || true
     web1=$(cpu_seconds $WEB)
     browser=""
     if [ "$pages" -gt 0 ]; then
       wait $BROWSER
-      browser=", $(cat "$WORK/pages.txt")"
+      browser=", $(tail -1 "$WORK/pages.txt")"
     fi
     echo "round $round, $pages job pages open: sweep run $(run_seconds "$id") s; cyclopt-web $(awk -v a="$web0" -v b="$web1" 'BEGIN { printf "%.2f", b - a }') CPU s$browser; load $(cut -d' ' -f1 /proc/loadavg)"
   done

@@ -221,15 +221,30 @@ function fleetView(main) {
 
 // --- Job -----------------------------------------------------------------------------------------
 
-// A uPlot chart that is rebuilt when its series change and fed new data otherwise.
+// A uPlot chart that is rebuilt when its series change and fed new data otherwise, at most every
+// kChartInterval ms (points of a fast sweep and progress samples arrive several times a second;
+// each drawing costs the browser more than the text lines).
+const kChartInterval = 500;
 class Chart {
   constructor(container, options) {
     this.container = container;
     this.options = options;  // title, x label, y label, log y
     this.plot = null;
     this.labels = "";
+    this.drawn = 0;       // when last drawn (performance.now())
+    this.pending = null;  // the newest data not drawn yet
   }
   show(labels, data) {
+    const due = this.drawn + kChartInterval - performance.now();
+    if (due > 0) {
+      if (!this.pending) setTimeout(() => { const p = this.pending; this.pending = null; this.draw(p.labels, p.data); }, due);
+      this.pending = { labels, data };
+      return;
+    }
+    this.draw(labels, data);
+  }
+  draw(labels, data) {
+    this.drawn = performance.now();
     const key = labels.join("\n");
     if (this.plot && key === this.labels) { this.plot.setData(data); return; }
     if (this.plot) this.plot.destroy();
