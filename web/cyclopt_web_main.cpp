@@ -12,6 +12,7 @@
 #include "web_token.hpp"
 
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <thread>
 
@@ -19,7 +20,7 @@ namespace {
 
 using namespace cyclopt;
 
-// `cyclopt-web token --key-file FILE [--hours H]`.
+// `cyclopt-web token [--key-file FILE] [--hours H]`.
 int print_token(const std::vector<std::string>& args) {
   std::string key_file;
   double hours = 12.0;
@@ -28,7 +29,8 @@ int print_token(const std::vector<std::string>& args) {
     else if (args[i] == "--hours") hours = std::atof(args[i + 1].c_str());
     else throw std::invalid_argument(args[i] + ": unknown flag of token (--key-file, --hours)");
   }
-  if (key_file.empty() || args.size() % 2 == 0) throw std::invalid_argument("token needs --key-file FILE [--hours H]");
+  if (const char* env = std::getenv("CYCLOPT_KEY_FILE"); key_file.empty() && env) key_file = env;  // as cyclopt's
+  if (key_file.empty() || args.size() % 2 == 0) throw std::invalid_argument("token needs --key-file FILE (or CYCLOPT_KEY_FILE) [--hours H]");
   if (!(hours > 0.0 && hours <= 24.0 * 366)) throw std::invalid_argument("--hours: a number in (0, 8784]");
   const wire::KeyRing ring = wire::read_key_file(key_file);
   const auto expires = wire::unix_now_us() / 1000000 + static_cast<std::int64_t>(hours * 3600.0);
