@@ -88,6 +88,12 @@ async function main() {
                                 { timeout: 5000 });
     check(true, "the fleet shows job 1 cancelled");
 
+    // A job that does not exist: the page says so instead of waiting.
+    const missing = await open(base + "/job/999");
+    await missing.waitForFunction(() => /^refused/.test(document.getElementById("connection").textContent), { timeout: 5000 });
+    check(true, "/job/999 says the stream was refused");
+    await missing.close();
+
     // Latency from a progress message's timestamp to its showing on the page.
     const latencies = (await fleet.evaluate(() => window.cycloptShownLatencyMs))
       .concat(await job.evaluate(() => window.cycloptShownLatencyMs)).sort((a, b) => a - b);

@@ -58,12 +58,17 @@ function stream(url, handlers, onOpen) {
   const state = document.getElementById("connection");
   let source = null;
   const connect = () => {
-    source = new EventSource(url);
+    const opened = new EventSource(url);
+    source = opened;
     source.onopen = () => {
       state.textContent = "live";
       if (onOpen) onOpen();
     };
-    source.onerror = () => { state.textContent = "reconnecting ..."; };
+    // A refused stream (no such job, not this key's, not logged in) is not retried by the browser.
+    source.onerror = () => {
+      state.textContent = opened.readyState === EventSource.CLOSED ? "refused: no such job, or not yours to read (reload to retry)"
+                                                                   : "reconnecting ...";
+    };
     for (const [name, handler] of Object.entries(handlers))
       source.addEventListener(name, (e) => handler(JSON.parse(e.data)));
   };
@@ -125,7 +130,7 @@ function fleetView(main) {
   main.appendChild(el("h1", {}, "Jobs"));
   const controls = el("div", { class: "controls" });
   const stateSelect = el("select", { id: "state-filter" });
-  for (const s of ["", "queued", "running", "done", "failed", "cancelled"])
+  for (const s of ["", "queued", "running", "done", "incomplete", "failed", "cancelled"])
     stateSelect.appendChild(el("option", { value: s }, s || "every state"));
   stateSelect.value = view.state;
   const kindSelect = el("select", { id: "kind-filter" });
