@@ -31,6 +31,15 @@ std::string new_request_id() {
 
 ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url, std::optional<wire::AuthKey> key) : bus_(lcm, url) {
   if (key) key_ = wire::KeyRing{{*key}};
+  subscribe();
+}
+
+ServiceClient::ServiceClient(lcm::LCM& lcm, const std::string& url, wire::KeyRing believed)
+    : bus_(lcm, url), key_(std::move(believed)) {
+  subscribe();
+}
+
+void ServiceClient::subscribe() {
   bus_.subscribe(channels::kAck, [this](std::span<const std::uint8_t> p) { on_ack(p); });
   bus_.subscribe(channels::kProgress, [this](std::span<const std::uint8_t> p) { on_progress(p); });
   bus_.subscribe(channels::kDone, [this](std::span<const std::uint8_t> p) { on_done(p); });

@@ -47,6 +47,9 @@ class ServiceClient {
   // key: with it every request is signed and only answers, progress and done messages signed
   // with it are believed (message_auth.hpp); without it signatures are ignored.
   explicit ServiceClient(lcm::LCM& lcm, const std::string& url = "", std::optional<wire::AuthKey> key = std::nullopt);
+  // A monitor holding the server's key file (cyclopt-web, docs/dashboard.md): believes answers,
+  // progress and done messages signed with any key of `believed`; makes no requests of its own.
+  ServiceClient(lcm::LCM& lcm, const std::string& url, wire::KeyRing believed);
 
   // Every request below throws SignatureRejected when the server answers that it does not accept
   // the request's signature (the one answer believed unsigned, cyclopt_channels.hpp).
@@ -84,6 +87,7 @@ class ServiceClient {
   void on_query_reply(std::span<const std::uint8_t> payload);
 
  private:
+  void subscribe();
   bool pump_until(const std::function<bool()>& done, double seconds);
   // The message in `raw` if it is well-formed (and, with a key, signed with it).
   template <class T>

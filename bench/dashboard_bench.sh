@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Issue 53 acceptance 2, the dashboard's costs (docs/dashboard.md): the fleet page with 200 jobs,
+# from navigation to its table drawn, and what 10 open job pages cost a running sweep (its run
+# time with and without them, alternating, and the CPU seconds of cyclopt-web and of the browser
+# meanwhile). The latency from a progress message to the page is measured by the browser test
+# (tests/web/dashboard_browser.sh -> bench/results/dashboard_latency.txt). cycloptd (one worker)
+# and cyclopt-web run inside a private network namespace; chromium through puppeteer-core
+# (deploy/install-deps.sh --browser).
+# usage: dashboard_bench.sh BUILD_DIR [ROUNDS]
+set -euo pipefail
+if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
+  exec unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
+fi
+BUILD=$(realpath "$1") ROUNDS=${2:-2}
+HERE=$(dirname "$(realpath "$0")")
+ip link set lo up
+ip route add 224.0.0.0/4 dev lo
+export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
+export NODE_PATH=/opt/cyclopt-browser-test/node_modules
+CYCLOPT=$BUILD/client/cyclopt
+WORK=$(mktemp -d /tmp/cyclopt-dashboard-bench.XXXXXX)
+SERVER='' WEB=''
+trap 'kill $WEB $SERVER 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"' EXIT
+PORT=8419 URL=http://127.0.0.1:8419
+
+start() {  # a fresh database, cycloptd with one worker, cyclopt-web
+  kill $WEB $SERVER 2>/dev/null || true
+  wait 2>/dev/null || true
+  rm -rf "$WORK/db" && mkdir "$WORK/db"
+  printf '{"database": "%s/db/results.db", "workers": 1, "progress_hz": 5, "max_queued_jobs": 1000}' "$WORK" >"$WORK/cycloptd.json"
+  "$BUILD/server/cycloptd" --config "$WORK/cycloptd.json" >"$WORK/server.log" 2>&1 &
+  SERVER=$!
+  for _ in $(seq 100); do "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 && break; sleep 0.1; done
+  "$BUILD/web/cyclopt-web" --config "$WORK/cycloptd.json" --listen 127.0.0.1:$PORT >"$WORK/web.log" 2>&1 &
+  WEB=$!
+  for _ in $(seq 50); do (echo >"/dev/tcp/127.0.0.1/$PORT") 2>/dev/null && break; sleep 0.1; done
+}
+cpu_seconds() { awk -v hz="$(getconf CLK_TCK)" '{ print ($14 + $15) / hz }' "/proc/$1/stat"; }
+run_seconds() { "$CYCLOPT" status "$1" | awk '$1 == "run_seconds" { print $2 }'; }
+
+lscpu | grep "Model name"
+echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# 1: the fleet page with 200 jobs (one running, 199 queued behind it).
+start
+echo '{"scene": "walker", "task": "foot_sweep", "name": "filler", "foot": "P2-shoes-left-HMT", "point_delay_ms": 500,
+  "sweep": {"parameter": "density", "values": "1:1:200"}}' >"$WORK/filler.json"
+for i in $(seq 200); do "$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "filler-$i" >/dev/null; done
+sleep 1.5
+node "$HERE/dashboard_bench.js" fleet "$URL" 200 5
+
+# 2: a point-foot sweep alone and with 10 open pages of it, alternating. The sweep waits in the
+# queue behind a gate job until the pages are loaded (the browser's start-up is not the sweep's).
+start
+echo '{"scene": "walker", "task": "sweep", "name": "measured sweep", "foot": "point",
+  "speeds": "0.8:0.005:1.4", "multistart": {"starts": 4, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}' >"$WORK/sweep.json"
+for round in $(seq "$ROUNDS"); do
+  for pages in 0 10; do
+    gate=$("$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "gate-$round-$pages" | awk '{ print $2 }')
+    id=$("$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id "sweep-$round-$pages" | awk '{ print $2 }')
+    : >"$WORK/pages.txt"
+    if [ "$pages" -gt 0 ]; then
+      node "$HERE/dashboard_bench.js" pages "$URL" "$id" "$pages" >"$WORK/pages.txt" &
+      BROWSER=$!
+      for _ in $(seq 600); do grep -q "pages ready" "$WORK/pages.txt" && break; sleep 0.1; done
+    fi
+    web0=$(cpu_seconds $WEB)
+    "$CYCLOPT" cancel "$gate" >/dev/null
+    "$CYCLOPT" watch "$id" >/dev/null 2>&1 || true
+    web1=$(cpu_seconds $WEB)
+    browser=""
+    if [ "$pages" -gt 0 ]; then
+      wait $BROWSER
+      browser=", $(tail -1 "$WORK/pages.txt")"
+    fi
+    echo "round $round, $pages job pages open: sweep run $(run_seconds "$id") s; cyclopt-web $(awk -v a="$web0" -v b="$web1" 'BEGIN { printf "%.2f", b - a }') CPU s$browser; load $(cut -d' ' -f1 /proc/loadavg)"
+  done
+done
