@@ -21,6 +21,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
+
 namespace py = pybind11;
 using namespace cyclopt;
 
@@ -28,10 +30,17 @@ namespace {
 
 foot::FootSpec foot_from_json(const std::string& text) { return io::foot_spec_from_json(nlohmann::json::parse(text)); }
 
-// The walker fields of a one-speed job spec, parsed as the server parses them.
-jobs::WalkerJob walker_job(const std::string& spec_text) {
+// A walker problem: the walker fields of a one-speed job spec, parsed as the server parses them,
+// and the evaluator of its model, built once (Python keeps recent scenes, model.py).
+struct GaitScene {
+  explicit GaitScene(jobs::WalkerJob j) : job(std::move(j)), evaluator(job.model()) {}
+  jobs::WalkerJob job;
+  walker::GaitEvaluator evaluator;
+};
+
+std::unique_ptr<GaitScene> gait_scene(const std::string& spec_text) {
   const nlohmann::json spec = nlohmann::json::parse(spec_text);
-  return jobs::parse_walker_job(spec, service::parse_common_job_fields(spec), false);
+  return std::make_unique<GaitScene>(jobs::parse_walker_job(spec, service::parse_common_job_fields(spec), false));
 }
 
 // Appendix E at the foot's density (or `density`, kg/m^2, when given).
@@ -78,17 +87,17 @@ py::dict rolling(const foot::FootSpec& spec, const py::array_t<double, py::array
 }
 
 // The automatic starting gait at the job's speed (or its "start").
-Eigen::VectorXd starting_gait(const jobs::WalkerJob& job) {
+Eigen::VectorXd starting_gait(const GaitScene& scene) {
   py::gil_scoped_release release;
-  return walker::gait_start(walker::GaitEvaluator(job.model()), job.speeds.at(0), job.start).x;
+  return walker::gait_start(scene.evaluator, scene.job.speeds.at(0), scene.job.start).x;
 }
 
-py::tuple evaluate_gait(const jobs::WalkerJob& job, const Eigen::VectorXd& x) {
+py::tuple evaluate_gait(const GaitScene& scene, const Eigen::VectorXd& x) {
   records::GaitRecord gait;
   std::optional<records::GaitTrajectoryRecord> trajectory;
   {
     py::gil_scoped_release release;
-    const walker::PeriodicGait<double> g = walker::GaitEvaluator(job.model()).evaluate(x, job.gait_options(job.speeds.at(0)));
+    const walker::PeriodicGait<double> g = scene.evaluator.evaluate(x, scene.job.gait_options(scene.job.speeds.at(0)));
     gait = jobs::gait_record(g);
     trajectory = jobs::trajectory_record(g.trajectory);
   }
@@ -96,7 +105,8 @@ py::tuple evaluate_gait(const jobs::WalkerJob& job, const Eigen::VectorXd& x) {
 }
 
 // The optimum as a job would store it: (values as JSON text, scalars, trajectories).
-py::tuple optimise_gait(const jobs::WalkerJob& job) {
+py::tuple optimise_gait(const GaitScene& scene) {
+  const jobs::WalkerJob& job = scene.job;
   jobs::WalkerPoint point;
   {
     py::gil_scoped_release release;
@@ -125,12 +135,9 @@ PYBIND11_MODULE(_model, m) {
   });
   m.def("mass_properties", &mass_properties, py::arg("foot"), py::arg("density") = py::none());
   m.def("rolling", &rolling, py::arg("foot"), py::arg("theta"));
-  py::class_<jobs::WalkerJob>(m, "WalkerJob")
-      .def_property_readonly("gait_parameter_count", [](const jobs::WalkerJob& j) {
-        return walker::gait_parameter_count(j.model().joint_count, j.constants.bezier_degree);
-      });
-  m.def("walker_job", &walker_job, py::arg("spec_json"));
-  m.def("starting_gait", &starting_gait, py::arg("job"));
-  m.def("evaluate_gait", &evaluate_gait, py::arg("job"), py::arg("x"));
-  m.def("optimise_gait", &optimise_gait, py::arg("job"));
+  py::class_<GaitScene>(m, "GaitScene");
+  m.def("gait_scene", &gait_scene, py::arg("spec_json"));
+  m.def("starting_gait", &starting_gait, py::arg("scene"));
+  m.def("evaluate_gait", &evaluate_gait, py::arg("scene"), py::arg("x"));
+  m.def("optimise_gait", &optimise_gait, py::arg("scene"));
 }

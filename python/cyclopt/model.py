@@ -6,6 +6,7 @@ e.g. ``"step_length [m]"``. Long calls release the GIL.
 
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import dataclass
 from typing import Any, Mapping, Optional
@@ -26,12 +27,14 @@ class Foot:
 
     def __init__(self, **fields: Any) -> None:
         self._spec = _model.foot_from_json(json.dumps(fields))
+        self._json = self._spec.to_json()
 
     @classmethod
     def preset(cls, name: str) -> "Foot":
         """A named foot (``"point"``, ``"P1-barefoot-left-HM"``, ...; :meth:`preset_names`)."""
         foot = cls.__new__(cls)
         foot._spec = _model.foot_preset(name)
+        foot._json = foot._spec.to_json()
         return foot
 
     @staticmethod
@@ -49,7 +52,7 @@ class Foot:
 
     def to_dict(self) -> dict[str, Any]:
         """The foot spec as a job spec's ``"foot"`` takes it."""
-        return json.loads(self._spec.to_json())
+        return json.loads(self._json)
 
     def mass_properties(self, density: Optional[float] = None) -> dict[str, float]:
         """Area, mass, centre of mass, inertias and theta_F0 at ``density`` (kg/m^2; default: the
@@ -90,15 +93,22 @@ class GaitOptimum(Gait):
         return bool(self.values.get("solver", {}).get("success", False))
 
 
-def _walker_job(foot: Foot, speed: float, fields: Mapping[str, Any]) -> Any:
-    spec = {"scene": "walker", "task": "optimise", "foot": foot.to_dict(), "speed": speed, **fields}
-    return _model.walker_job(json.dumps(spec))
+@functools.lru_cache(maxsize=16)
+def _cached_scene(foot_json: str, speed: float, fields_json: str) -> Any:
+    spec = {"scene": "walker", "task": "optimise", "foot": json.loads(foot_json), "speed": speed,
+            **json.loads(fields_json)}
+    return _model.gait_scene(json.dumps(spec))
+
+
+def _scene(foot: Foot, speed: float, fields: Mapping[str, Any]) -> Any:
+    """The walker problem (its fields checked, its model and evaluator built) of recent calls."""
+    return _cached_scene(foot._json, float(speed), json.dumps(fields, sort_keys=True))
 
 
 def starting_gait(foot: Foot, speed: float, **fields: Any) -> np.ndarray:
     """The automatic starting gait's parameters x at ``speed`` (m/s). ``fields``: the walker fields
     of a job spec (docs/walker-jobs.md), e.g. ``points=200``, ``bezier_degree=6``."""
-    return _model.starting_gait(_walker_job(foot, speed, fields))
+    return _model.starting_gait(_scene(foot, speed, fields))
 
 
 def evaluate_gait(foot: Foot, x: Any, speed: float, points: int = 200, **fields: Any) -> Gait:
@@ -106,9 +116,8 @@ def evaluate_gait(foot: Foot, x: Any, speed: float, points: int = 200, **fields:
     section 5.3, on ``points`` grid points P (eq. 5.93) with target speed ``speed`` (m/s, for the
     speed equality 5.103). ``fields``: further walker fields (``bezier_degree``, ``objective``,
     ``quadrature``); bad values raise :class:`cyclopt.SpecError`."""
-    job = _walker_job(foot, speed, {"points": points, **fields})
     x = np.ascontiguousarray(x, dtype=float)
-    scalars, trajectories = _model.evaluate_gait(job, x)
+    scalars, trajectories = _model.evaluate_gait(_scene(foot, speed, {"points": points, **fields}), x)
     return Gait(scalars, trajectories, x)
 
 
@@ -120,6 +129,6 @@ def optimise_gait(foot: Foot, speed: float, points: int = 200, start: Any = None
     with ``converged`` False."""
     if start is not None:
         fields = {**fields, "start": [float(v) for v in np.asarray(start, dtype=float)]}
-    values_json, scalars, trajectories = _model.optimise_gait(_walker_job(foot, speed, {"points": points, **fields}))
+    values_json, scalars, trajectories = _model.optimise_gait(_scene(foot, speed, {"points": points, **fields}))
     values = json.loads(values_json)
     return GaitOptimum(scalars, trajectories, np.asarray(values.get("x", []), dtype=float), values)

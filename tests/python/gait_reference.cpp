@@ -5,10 +5,10 @@
 //     SPEC_JSON: the walker fields of a one-speed job spec, as cyclopt.evaluate_gait sends them.
 //     Prints JSON: the starting gait's "x" at the speed, the "gait" and "trajectory" records
 //     (records/gait_records.hpp) evaluated there (shortest round-trip decimals, so exact), and the
-//     mean seconds of one evaluation over REPEATS calls (default 0: not timed): "call_seconds" for
-//     what cyclopt.evaluate_gait does in C++ (parse the fields, build the model and evaluator,
-//     evaluate with trajectories, make the records) and "evaluate_seconds" for
-//     GaitEvaluator::evaluate alone.
+//     mean seconds of one evaluation over REPEATS calls (default 0: not timed): "evaluate_seconds"
+//     for GaitEvaluator::evaluate with trajectories, "call_seconds" for that and the records that
+//     cyclopt.evaluate_gait turns into Python objects (its scene, the evaluator, built once as the
+//     package keeps it).
 //   cyclopt-python-reference store DB POINTS SEED
 //     Fills DB with a finished walker sweep of POINTS points through the store API: gaits of the
 //     point foot evaluated at random gait parameters near the starting gait at 1.0 m/s
@@ -64,8 +64,7 @@ int evaluate(const std::string& spec_text, int repeats) {
   if (const auto t = jobs::trajectory_record(gait.trajectory)) out["trajectory"] = *t;
   if (repeats > 0) {
     out["call_seconds"] = mean_seconds(repeats, [&] {
-      const jobs::WalkerJob j = walker_job(nlohmann::json::parse(spec_text));
-      const walker::PeriodicGait<double> g = walker::GaitEvaluator(j.model()).evaluate(x, j.gait_options(j.speeds.at(0)));
+      const walker::PeriodicGait<double> g = evaluator.evaluate(x, job.gait_options(job.speeds.at(0)));
       const records::GaitRecord r = jobs::gait_record(g);
       const auto t = jobs::trajectory_record(g.trajectory);
       if (!r.real && t) std::abort();  // keeps the records from being optimised away
