@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace py = pybind11;
@@ -96,6 +97,7 @@ class Results {
     storage::QueryPage page;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       page = source_.fetch(storage::query_for(what, job_id, state));
     }
     return page.rows.dump();
@@ -111,6 +113,7 @@ class Results {
     std::vector<records::GaitRecord> gaits;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       curves = source_.fetch(storage::query_for("curves", job_id));
       points = source_.fetch(storage::query_for("solutions", job_id));
       for (const nlohmann::json& row : points.rows) {
@@ -162,6 +165,7 @@ class Results {
     std::optional<records::GaitTrajectoryRecord> found;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       const storage::QueryPage page = source_.fetch(storage::query_for("trajectories", job_id));
       for (const nlohmann::json& row : page.rows)
         if (row.at("curve") == curve && row.at("point") == point && row.at("format") == "json")
@@ -174,6 +178,7 @@ class Results {
     std::optional<cyclopt_lcm::job_ack_t> ack;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       ack = source_.remote().submit(request_id.empty() ? client::new_request_id() : request_id, spec_json, kAnswerSeconds);
     }
     return ack ? py::object(ack_dict(*ack)) : py::none();
@@ -183,6 +188,7 @@ class Results {
     std::optional<cyclopt_lcm::job_ack_t> ack;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       ack = source_.remote().cancel(job_id, kAnswerSeconds);
     }
     return ack ? py::object(ack_dict(*ack)) : py::none();
@@ -194,6 +200,7 @@ class Results {
     std::optional<cyclopt_lcm::job_done_t> done;
     {
       py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
       const std::function<void(const cyclopt_lcm::job_progress_t&)> keep = [&](const cyclopt_lcm::job_progress_t& p) {
         progress.push_back(p);
       };
@@ -204,12 +211,19 @@ class Results {
     return py::make_tuple(records, done ? py::object(done_dict(*done)) : py::none());
   }
 
-  long malformed_received() { return source_.remote().malformed_received(); }
-  long unverified_received() { return source_.remote().unverified_received(); }
+  long malformed_received() {
+    std::lock_guard lock(mutex_);
+    return source_.remote().malformed_received();
+  }
+  long unverified_received() {
+    std::lock_guard lock(mutex_);
+    return source_.remote().unverified_received();
+  }
   bool reads_database() const { return source_.reads_database(); }
 
  private:
   client::ResultSource source_;
+  std::mutex mutex_;  // the source is used by one thread at a time (calls release the GIL)
 };
 
 }  // namespace

@@ -52,7 +52,7 @@ class Job:
         """The stored trajectory of a point (a row of :meth:`points`, or ``(curve, point)``) as
         NumPy arrays on the phase grid: ``"time [s]"``, ``"q [rad]"`` (rows theta, q_b),
         ``"torque [N m]"``, ...; None when the point has none."""
-        curve, index = (int(point["curve"]), int(point["point"])) if hasattr(point, "__getitem__") and not isinstance(point, tuple) else point
+        curve, index = point if isinstance(point, (tuple, list)) else (point["curve"], point["point"])
         return self._results.trajectory(self.id, int(curve), int(index))
 
     def watch(self, timeout: float = 3600.0) -> Iterator[dict[str, Any]]:
