@@ -31,6 +31,7 @@
 #include "point_table.hpp"
 #include "progress_line.hpp"
 #include "row_table.hpp"
+#include "result_source.hpp"
 #include "service_client.hpp"
 
 #include <algorithm>
@@ -177,9 +178,6 @@ struct Options {
 
 struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
-};
-struct NoAnswer : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 // A spec file or value that is not what the server would accept: found before sending (exit 2).
 struct LocalRejection : std::invalid_argument {
@@ -405,60 +403,6 @@ std::string spec_text(const Options& o) {
   return spec.dump();
 }
 
-class Session {
- public:
-  explicit Session(const Options& o) : o_(o) {}
-
-  // Every row a query matches, from the database file or the server.
-  cyclopt::storage::QueryPage fetch(cyclopt::storage::QueryRequest r) {
-    r.limit = 1000;
-    if (!o_.db.empty()) {
-      cyclopt::storage::ResultStore& store = local();
-      cyclopt::storage::QueryPage all;
-      while (true) {
-        cyclopt::storage::QueryPage page = cyclopt::storage::run_query(store, r);
-        all.total = page.total;
-        for (auto& row : page.rows) all.rows.push_back(std::move(row));
-        r.offset += static_cast<int>(page.rows.size());
-        if (page.rows.empty() || r.offset >= page.total) return all;
-      }
-    }
-    r.limit = 1 << 30;
-    auto page = remote().query(r, o_.timeout);
-    if (!page) {
-      char text[96];
-      std::snprintf(text, sizeof text, "no answer from cycloptd within %g s", o_.timeout);
-      throw NoAnswer(text);
-    }
-    return *page;
-  }
-
-  cyclopt::storage::ResultStore& local() {
-    if (!store_) store_.emplace(o_.db, cyclopt::storage::OpenMode::read_only);
-    return *store_;
-  }
-
-  cyclopt::client::ServiceClient& remote() {
-    if (!client_) {
-      const std::string url = cyclopt::wire::resolved_lcm_url(o_.lcm_url);
-      lcm_.emplace(url);
-      if (!lcm_->good()) throw std::runtime_error("cannot open LCM at '" + url + "'");
-      std::string key_file = o_.key_file;
-      if (const char* env = std::getenv("CYCLOPT_KEY_FILE"); key_file.empty() && env) key_file = env;
-      std::optional<cyclopt::wire::AuthKey> key;
-      if (!key_file.empty()) key = cyclopt::wire::read_key_file(key_file).keys.front();
-      client_.emplace(*lcm_, url, key);
-    }
-    return *client_;
-  }
-
- private:
-  const Options& o_;
-  std::optional<cyclopt::storage::ResultStore> store_;
-  std::optional<lcm::LCM> lcm_;
-  std::optional<cyclopt::client::ServiceClient> client_;
-};
-
 int exit_for_state(const std::string& state) {
   if (state == "done") return kOk;
   return state == "incomplete" ? cyclopt::cli::kExitIncomplete : kRejected;
@@ -480,7 +424,7 @@ std::size_t terminal_height() {
   return 0;
 }
 
-int watch(Session& s, const Options& o, std::int64_t job_id) {
+int watch(cyclopt::client::ResultSource& s, const Options& o, std::int64_t job_id) {
   const bool tty = isatty(fileno(stderr));
   const std::size_t width = tty ? terminal_width(stderr, 100) - 1 : 400;
   cyclopt::client::LogThrottle log(std::chrono::seconds(5));
@@ -549,7 +493,7 @@ void validate_locally(const std::string& spec_json) {
   }
 }
 
-int submit(Session& s, const Options& o) {
+int submit(cyclopt::client::ResultSource& s, const Options& o) {
   const std::string spec = spec_text(o);
   validate_locally(spec);
   const std::string id = o.request_id.empty() ? cyclopt::client::new_request_id() : o.request_id;
@@ -568,7 +512,7 @@ int submit(Session& s, const Options& o) {
   return o.watch ? watch(s, o, ack->job_id) : kOk;
 }
 
-int status(Session& s, const Options& o) {
+int status(cyclopt::client::ResultSource& s, const Options& o) {
   const auto page = s.fetch(cyclopt::storage::query_for("job", job_argument(o)));
   nlohmann::json job = page.rows.at(0);
   if (o.format != cyclopt::client::RowFormat::table) {
@@ -596,7 +540,7 @@ int status(Session& s, const Options& o) {
 
 // The jobs as a table fitting the terminal (120 columns when not a terminal); --wide / --csv /
 // --json every column.
-int list(Session& s, const Options& o) {
+int list(cyclopt::client::ResultSource& s, const Options& o) {
   const nlohmann::json rows = s.fetch(cyclopt::storage::query_for("jobs", 0, o.state)).rows;
   if (o.format != cyclopt::client::RowFormat::table) {
     cyclopt::client::print_rows(std::cout, rows, o.format);
@@ -612,7 +556,7 @@ int list(Session& s, const Options& o) {
 // The fleet live (docs/watching-jobs.md): the job list from the server every --interval, the
 // progress messages of every job in between. Running and queued jobs first, then the others,
 // newest first; on a terminal as many as fit its height, redrawn in place.
-int top(Session& s, const Options& o) {
+int top(cyclopt::client::ResultSource& s, const Options& o) {
   const bool tty = isatty(fileno(stdout));
   std::map<std::int64_t, cyclopt_lcm::job_progress_t> live;  // the last message of each job
   const auto on_progress = [&](const cyclopt_lcm::job_progress_t& p) { live[p.job_id] = p; };
@@ -650,7 +594,7 @@ int top(Session& s, const Options& o) {
   }
 }
 
-int cancel(Session& s, const Options& o) {
+int cancel(cyclopt::client::ResultSource& s, const Options& o) {
   const std::int64_t id = job_argument(o);
   const auto ack = s.remote().cancel(id, o.timeout);
   if (!ack) return kNoAnswer;
@@ -663,13 +607,13 @@ int cancel(Session& s, const Options& o) {
 }
 
 // Everything about a job: the job row with its spec and the rows of every part (kJobParts).
-nlohmann::json job_document(Session& s, std::int64_t id) {
+nlohmann::json job_document(cyclopt::client::ResultSource& s, std::int64_t id) {
   nlohmann::json j = s.fetch(cyclopt::storage::query_for("job", id)).rows.at(0);
   for (const char* what : cyclopt::storage::kJobParts) j[what] = s.fetch(cyclopt::storage::query_for(what, id)).rows;
   return j;
 }
 
-int export_job(Session& s, const Options& o) {
+int export_job(cyclopt::client::ResultSource& s, const Options& o) {
   const std::int64_t id = job_argument(o);
   const nlohmann::json j = job_document(s, id);
   if (o.out.empty()) {
@@ -683,7 +627,7 @@ int export_job(Session& s, const Options& o) {
   return kOk;
 }
 
-int plot(Session& s, const Options& o) {
+int plot(cyclopt::client::ResultSource& s, const Options& o) {
   if (o.positional.size() != 1) throw UsageError("plot needs exactly one KIND");
   const std::string& kind = o.positional[0];
   const std::string dir = o.out.empty() ? "." : o.out;
@@ -719,7 +663,7 @@ int plot(Session& s, const Options& o) {
   return kOk;
 }
 
-int report(Session& s, const Options& o) {
+int report(cyclopt::client::ResultSource& s, const Options& o) {
   const std::int64_t id = job_argument(o);
   const std::string path = o.out.empty() ? "job" + std::to_string(id) + ".html" : o.out;
   const nlohmann::json doc = job_document(s, id);
@@ -732,7 +676,7 @@ int report(Session& s, const Options& o) {
 }
 
 int run(const Options& o) {
-  Session s(o);
+  cyclopt::client::ResultSource s({.database = o.db, .lcm_url = o.lcm_url, .key_file = o.key_file, .timeout = o.timeout});
   if (o.command == "submit") return submit(s, o);
   if (o.command == "watch") return watch(s, o, job_argument(o));
   if (o.command == "status") return status(s, o);
@@ -794,7 +738,7 @@ int main(int argc, char** argv) {
   } catch (const LocalRejection& e) {
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
     return kRejected;
-  } catch (const NoAnswer& e) {
+  } catch (const cyclopt::client::NoAnswer& e) {
     std::fprintf(stderr, "cyclopt: %s\n", e.what());
     return kNoAnswer;
   } catch (const cyclopt::client::QueryError& e) {

@@ -23,6 +23,8 @@ packages=(
   libgtest-dev libgmock-dev     # unit tests
   libbenchmark-dev              # benchmarks
   iproute2 util-linux           # ip / unshare for network-namespace integration tests
+  pybind11-dev python3-dev      # the Python package (python/, docs/python.md)
+  python3-numpy python3-pandas python3-matplotlib python3-pytest  # ... its arrays, tables, figures and tests
 )
 # Where --browser installs puppeteer-core; tests/web/dashboard_browser.sh looks there.
 BROWSER_TEST_PREFIX=/opt/cyclopt-browser-test

@@ -18,12 +18,7 @@ void run_evaluate(const WalkerJob& job, JobContext& ctx) {
   const double v = job.speeds[0];
   const walker::GaitEvaluator ev(job.model());
   const walker::GaitStart start = walker::gait_start(ev, v, job.start);
-  walker::GaitOptions go;
-  go.objective = job.problem.objective;
-  go.speed = v;
-  go.quadrature = job.problem.quadrature;
-  go.positive_power_band = job.problem.positive_power_band;
-  WalkerPoint p = walker_point(ev.evaluate(start.x, go), start, {0, 0}, v);
+  WalkerPoint p = walker_point(ev.evaluate(start.x, job.gait_options(v)), start, {0, 0}, v);
   p.row.iterations = 1;
   ctx.count_iterations(1);
   ctx.store_point(p.stored());
