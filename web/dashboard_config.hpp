@@ -28,14 +28,20 @@ inline constexpr const char* kDashboardUsage =
     R"(usage: cyclopt-web [--config CYCLOPTD.json] [--database FILE] [--lcm-url URL]
                    [--listen HOST:PORT] [--allow-remote] [--refresh-seconds S]
        cyclopt-web token [--key-file FILE] [--hours H]
-The browser dashboard of cycloptd's jobs (docs/dashboard.md): open http://HOST:PORT/.
-  --config FILE      cycloptd's config file: database, lcm_url, auth_secret_file and auth_reads are
-                     taken from it (the server's other settings are ignored)
-  --listen HOST:PORT default 127.0.0.1:8080; a HOST other than loopback needs --allow-remote
-  --refresh-seconds  how often the job list is read from the database (default 1, 0.1 .. 60)
-  token              prints a login token of the key in FILE (your cyclopt key file, default
-                     $CYCLOPT_KEY_FILE) valid for H hours (default 12): open
-                     http://HOST:PORT/login?token=TOKEN
+
+The browser dashboard of cycloptd's jobs (docs/dashboard.md): open
+http://HOST:PORT/.
+
+  --config FILE      cycloptd's config file: database, lcm_url, auth_secret_file
+                     and auth_reads are taken from it (the server's other
+                     settings are ignored)
+  --listen HOST:PORT default 127.0.0.1:8080; a HOST other than loopback needs
+                     --allow-remote
+  --refresh-seconds  how often the job list is read from the database (default
+                     1, 0.1 .. 60)
+  token              prints a login token of the key in FILE (your cyclopt key
+                     file, default $CYCLOPT_KEY_FILE) valid for H hours (default
+                     12): open http://HOST:PORT/login?token=TOKEN
 )";
 
 }  // namespace cyclopt::web

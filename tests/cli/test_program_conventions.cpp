@@ -41,11 +41,12 @@ Outcome run(const std::string& command) {
   return r;
 }
 
-const std::array<std::pair<const char*, const char*>, 5> kPrograms = {{{"cyclopt", CYCLOPT_CLI},
+const std::array<std::pair<const char*, const char*>, 6> kPrograms = {{{"cyclopt", CYCLOPT_CLI},
                                                                         {"cyclopt-foot", CYCLOPT_FOOT_CLI},
                                                                         {"cyclopt-giant-swing", CYCLOPT_GIANT_SWING_CLI},
                                                                         {"cycloptd", CYCLOPTD},
-                                                                        {"cyclopt-worker", CYCLOPT_WORKER}}};
+                                                                        {"cyclopt-worker", CYCLOPT_WORKER},
+                                                                        {"cyclopt-web", CYCLOPT_WEB}}};
 
 // A newcomer reads --help in an 80-column terminal: no line of any program's help (and of the
 // subcommands' own) is wider.
