@@ -5,17 +5,10 @@
 # namespace (unshare -n) whose loopback carries the multicast route; killed after 60 s.
 # usage: fleet_views.sh CYCLOPTD CYCLOPT     exit: 0 pass, 1 fail, 77 skipped (no namespace)
 set -euo pipefail
-if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 60 unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
-fi
+. "$(dirname "$0")/../service/netns.sh"
+netns_enter 60 "-n" "$0" "$@"
 CYCLOPTD=$1 CYCLOPT=$2
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+netns_loopback_multicast
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-fleet.XXXXXX)
 trap 'kill $SERVER 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"' EXIT

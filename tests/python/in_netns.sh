@@ -5,19 +5,12 @@
 # $CYCLOPT_KEY_FILE and the database in $CYCLOPT_DATABASE. Killed after TIMEOUT seconds.
 # usage: in_netns.sh TIMEOUT CYCLOPTD COMMAND...     exit: the command's, 77 skipped (no namespace)
 set -euo pipefail
-if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 "$1" unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
-fi
+. "$(dirname "$0")/../service/netns.sh"
+netns_enter "$1" "-n" "$0" "$@"
 shift
 CYCLOPTD=$1
 shift
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+netns_loopback_multicast
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-python.XXXXXX)
 trap 'kill $SERVER 2>/dev/null; wait 2>/dev/null; rm -rf "$WORK"' EXIT

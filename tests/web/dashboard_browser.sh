@@ -14,16 +14,12 @@ if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
   command -v node > /dev/null || { echo "SKIP: no node (deploy/install-deps.sh --browser installs it)"; exit 77; }
   [ -d "$PUPPETEER_PREFIX/node_modules/puppeteer-core" ] \
     || { echo "SKIP: no puppeteer-core in $PUPPETEER_PREFIX (deploy/install-deps.sh --browser installs it)"; exit 77; }
-  if ! unshare -n true 2>/dev/null; then
-    echo "SKIP: cannot create a network namespace (needs root / CAP_SYS_ADMIN)"
-    exit 77
-  fi
-  exec timeout -k 5 90 unshare -n env CYCLOPT_IN_NETNS=1 CHROMIUM="$CHROMIUM" bash "$0" "$@"
+  export CHROMIUM
 fi
+. "$(dirname "$0")/../service/netns.sh"
+netns_enter 90 "-n" "$0" "$@"
 CYCLOPTD=$1 CYCLOPT=$2 CYCLOPT_WEB=$3 OUT_DIR=$4
-ip link set lo up
-ip route add 224.0.0.0/4 dev lo
-ip route get 239.255.76.67 | grep -q "dev lo" || { echo "FAIL: multicast not routed to lo"; exit 1; }
+netns_loopback_multicast
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 WORK=$(mktemp -d /tmp/cyclopt-dashboard.XXXXXX)
 SERVER='' WEB=''
