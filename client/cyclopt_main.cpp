@@ -504,7 +504,8 @@ int submit(cyclopt::client::ResultSource& s, const Options& o) {
   }
   if (!ack->accepted) {
     std::fprintf(stderr, "cyclopt: rejected (field %s): %s\n", ack->field.c_str(), ack->problem.c_str());
-    return kRejected;
+    // The server's own failure (its database, say) is no fault of the spec.
+    return ack->field == "server" ? cli::kExitResource : kRejected;
   }
   std::printf("job %lld %s (request %s, state %s)\n", static_cast<long long>(ack->job_id),
               ack->duplicate ? "already submitted" : "queued", id.c_str(), ack->state.c_str());

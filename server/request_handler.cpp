@@ -155,6 +155,11 @@ void RequestHandler::handle_submit(std::span<const std::uint8_t> payload) {
     if (!out.duplicate) pool_.wake();
   } catch (const SpecError& e) {
     reject(msg.request_id, e.field(), e.what(), key);
+  } catch (const storage::StorageError& e) {  // a full disk, say: the spec may be fine
+    reject(msg.request_id, "server",
+           std::string("server: the results database refused the job (") + e.what() +
+               "): nothing was queued; submit again later (the same request id is safe)",
+           key);
   } catch (const std::exception& e) {
     reject(msg.request_id, "server", std::string("server: internal error: ") + e.what(), key);
   } catch (...) {

@@ -240,6 +240,27 @@ TEST_F(ServerMemq, FullDiskRequeuesTheJobTellsItsWatchersAndKeepsItsPoints) {
   EXPECT_EQ(srv.store().job(ack.job_id)->points_stored, 400);
 }
 
+// A submission the store cannot take (a full disk, injected as PRAGMA query_only) is refused as the
+// server's failure, not the spec's: field "server", saying nothing was queued and that the same
+// request id may be sent again - which is accepted once the store takes writes again.
+TEST_F(ServerMemq, ASubmissionTheStoreCannotTakeIsRefusedAsTheServersFailure) {
+  server::Server srv(config_, kinds_, lcm_);
+  auto set_query_only = [&](bool on) {
+    std::lock_guard lock(srv.store().mutex());
+    srv.store().connection().exec(std::string("PRAGMA query_only = ") + (on ? "1" : "0"));
+  };
+  set_query_only(true);
+  const auto refused = submit("full-disk", sweep(3, 5));
+  EXPECT_FALSE(refused.accepted);
+  EXPECT_EQ(refused.field, "server");
+  EXPECT_NE(refused.problem.find("nothing was queued"), std::string::npos) << refused.problem;
+  EXPECT_EQ(refused.problem.find("internal error"), std::string::npos) << refused.problem;
+  set_query_only(false);
+  const auto again = submit("full-disk", sweep(3, 5));
+  EXPECT_TRUE(again.accepted) << again.problem;
+  EXPECT_FALSE(again.duplicate);
+}
+
 // A store that refuses every write (PRAGMA query_only: the injected form of a full disk that also
 // has no room for the state change): the point fails, re-queueing fails too. The job must not stay
 // `running` without a worker: its worker retries the state change, says so on LCM, and once writes
