@@ -10,12 +10,12 @@
 
 #include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/plot/job_report.hpp"
+#include "cyclopt/records/json_fields.hpp"
 #include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/solution_point.hpp"
 
 #include <httplib.h>
 
-#include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -38,17 +38,17 @@ struct Viewer {
   bool all_jobs = true;
 };
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+using records::finite_or_null;
 
 nlohmann::json progress_json(const cyclopt_lcm::job_progress_t& p) {
   return {{"timestamp_us", p.timestamp_us},       {"iteration", p.iteration},
-          {"objective", number(p.objective)},     {"constraint_violation", number(p.constraint_violation)},
-          {"parameter", number(p.parameter)},     {"curve", p.curve_id},
+          {"objective", finite_or_null(p.objective)},     {"constraint_violation", finite_or_null(p.constraint_violation)},
+          {"parameter", finite_or_null(p.parameter)},     {"curve", p.curve_id},
           {"points_done", p.points_done},         {"points_total", p.points_total},
-          {"percent", number(p.percent)},         {"percent_lower_bound", p.percent_is_lower_bound},
-          {"eta_seconds", number(p.eta_seconds)}, {"phase", p.phase},
+          {"percent", finite_or_null(p.percent)},         {"percent_lower_bound", p.percent_is_lower_bound},
+          {"eta_seconds", finite_or_null(p.eta_seconds)}, {"phase", p.phase},
           {"phase_done", p.phase_done},           {"phase_total", p.phase_total},
-          {"best_objective", number(p.best_objective)}, {"elapsed_seconds", number(p.elapsed_seconds)},
+          {"best_objective", finite_or_null(p.best_objective)}, {"elapsed_seconds", finite_or_null(p.elapsed_seconds)},
           {"message", p.message}};
 }
 

@@ -1,5 +1,7 @@
 #include "fleet_row_json.hpp"
 
+#include "cyclopt/records/json_fields.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,7 +9,7 @@ namespace cyclopt::web {
 
 namespace {
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+using records::finite_or_null;
 nlohmann::json time_text(double unix_seconds) {
   return std::isfinite(unix_seconds) ? nlohmann::json(client::local_iso_minutes(unix_seconds)) : nlohmann::json(nullptr);
 }
@@ -43,11 +45,11 @@ nlohmann::json to_json(const FleetRow& r) {
           {"foot", j.foot},
           {"state", j.state},
           {"phase", j.phase},
-          {"percent", number(j.percent)},
+          {"percent", finite_or_null(j.percent)},
           {"percent_lower_bound", j.percent_lower_bound},
-          {"eta_seconds", number(j.eta_seconds)},
-          {"best_objective", number(j.best_objective)},
-          {"run_seconds", number(j.run_seconds)},
+          {"eta_seconds", finite_or_null(j.eta_seconds)},
+          {"best_objective", finite_or_null(j.best_objective)},
+          {"run_seconds", finite_or_null(j.run_seconds)},
           {"submitted", time_text(j.submitted_at)},
           {"started", time_text(j.started_at)},
           {"finished", time_text(j.finished_at)},

@@ -1,13 +1,14 @@
 #include "cyclopt/storage/result_queries.hpp"
 
-#include <cmath>
+#include "cyclopt/records/json_fields.hpp"
+
 #include <stdexcept>
 
 namespace cyclopt::storage {
 
 namespace {
 
-nlohmann::json nullable(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+using records::finite_or_null;
 
 // A text cell as valid UTF-8: a damaged or foreign byte sequence becomes U+FFFD, so one bad cell
 // cannot make a whole page unprintable (nlohmann::json refuses to dump invalid UTF-8).
@@ -82,9 +83,9 @@ nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset
                     job_id, offset, limit, [](const Statement& q) {
                       return nlohmann::json{{"curve", q.int64(0)},
                                             {"point", q.int64(1)},
-                                            {"parameter", nullable(q.real(2))},
-                                            {"objective", nullable(q.real(3))},
-                                            {"constraint_violation", nullable(q.real(4))},
+                                            {"parameter", finite_or_null(q.real(2))},
+                                            {"objective", finite_or_null(q.real(3))},
+                                            {"constraint_violation", finite_or_null(q.real(4))},
                                             {"iterations", q.int64(5)},
                                             {"status", utf8(q.text(6))},
                                             {"values", json_cell(q.text(7), "values_json")},
