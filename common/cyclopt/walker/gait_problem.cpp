@@ -85,15 +85,17 @@ WalkerModel<double> GaitProblem::model_at(const Eigen::VectorXd& z) const {
   return with_model_parameters<double>(model_, p);
 }
 
-GaitOptions GaitProblem::gait_options(bool trajectories) const {
+GaitOptions gait_options_of(const GaitProblemOptions& p, bool keep_trajectories) {
   GaitOptions o;
-  o.objective = options_.objective;
-  o.speed = options_.speed;
-  o.quadrature = options_.quadrature;
-  o.positive_power_band = options_.positive_power_band;
-  o.keep_trajectories = trajectories;
+  o.objective = p.objective;
+  o.speed = p.speed;
+  o.quadrature = p.quadrature;
+  o.positive_power_band = p.positive_power_band;
+  o.keep_trajectories = keep_trajectories;
   return o;
 }
+
+GaitOptions GaitProblem::gait_options(bool trajectories) const { return gait_options_of(options_, trajectories); }
 
 PeriodicGait<double> GaitProblem::gait_at(const Eigen::VectorXd& z) const {
   const Eigen::VectorXd x = gait_parameters(z);

@@ -36,6 +36,9 @@ struct GaitProblemOptions {
                                      // needs the trapezoid rule
 };
 
+// The options of one gait evaluation of the problem `o` (objective, speed, quadrature, band).
+GaitOptions gait_options_of(const GaitProblemOptions& o, bool keep_trajectories);
+
 class GaitProblem : public nlp::Problem {
  public:
   // Throws std::invalid_argument naming an unknown free parameter (with the valid names) or a

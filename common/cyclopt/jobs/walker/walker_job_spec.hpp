@@ -69,15 +69,8 @@ struct WalkerJob {
     o.speed = speed;
     return o;
   }
-  // The options of one gait evaluation at one speed (the problem's objective, quadrature and band).
-  walker::GaitOptions gait_options(double speed) const {
-    walker::GaitOptions o;
-    o.objective = problem.objective;
-    o.speed = speed;
-    o.quadrature = problem.quadrature;
-    o.positive_power_band = problem.positive_power_band;
-    return o;
-  }
+  // The options of one gait evaluation at one speed, with trajectories.
+  walker::GaitOptions gait_options(double speed) const { return walker::gait_options_of(problem_at(speed), true); }
 };
 
 // Parses and validates the walker fields; `sweep` selects "speeds" instead of "speed"; the
