@@ -19,7 +19,8 @@ double kinetic_energy_at(const walker::WalkerModel<double>& m, const records::Ga
 }
 
 double total_energy_at(const walker::WalkerModel<double>& m, const records::GaitTrajectoryRecord& tr, std::size_t k) {
-  return kinetic_energy_at(m, tr, k) + walker::potential_energy(m, walker::stance_frame(m, sample(tr.q, k)));
+  const walker::StanceFrame<double> f = walker::stance_frame(m, sample(tr.q, k));  // one frame for both energies
+  return walker::kinetic_energy(m, f, sample(tr.q_dot, k)) + walker::potential_energy(m, f);
 }
 
 }  // namespace cyclopt::plot

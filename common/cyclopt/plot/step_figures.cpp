@@ -48,11 +48,15 @@ LineChart per_joint_chart(const records::GaitTrajectoryRecord& tr, AxesStyle axe
 
 const char* kStepTime = "relative step time t/T (-), impact to impact";
 
-// sum_i P_i = sum_i u_i dq_{b,i}/dt at sample k.
+// P_j = u_j dq_{b,j}/dt at sample k (eq. 5.100).
+double joint_power(const records::GaitTrajectoryRecord& tr, int j, std::size_t k) {
+  return tr.torque[static_cast<std::size_t>(j)].at(k) * tr.q_dot.at(static_cast<std::size_t>(1 + j)).at(k);
+}
+
+// sum_j P_j at sample k.
 double total_joint_power(const records::GaitTrajectoryRecord& tr, std::size_t k) {
   double p = 0;
-  for (int j = 0; j < joints_of(tr); ++j)
-    p += tr.torque[static_cast<std::size_t>(j)].at(k) * tr.q_dot.at(static_cast<std::size_t>(1 + j)).at(k);
+  for (int j = 0; j < joints_of(tr); ++j) p += joint_power(tr, j, k);
   return p;
 }
 
@@ -79,9 +83,7 @@ LineChart joint_power_chart(const WalkerJobResults&, const GaitPoint& p) {
   const std::vector<double> t = relative_time(tr);
   auto power = [&tr](int j) {
     std::vector<double> out;
-    const std::vector<double>& u = tr.torque[static_cast<std::size_t>(j)];
-    const std::vector<double>& qd = tr.q_dot.at(static_cast<std::size_t>(1 + j));
-    for (std::size_t i = 0; i < u.size(); ++i) out.push_back(u[i] * qd[i]);
+    for (std::size_t k = 0; k < tr.time.size(); ++k) out.push_back(joint_power(tr, j, k));
     return out;
   };
   LineChart chart = per_joint_chart(
