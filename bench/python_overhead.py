@@ -3,7 +3,8 @@
 1. cyclopt.evaluate_gait from Python (its scene cached, as repeated calls find it) against the C++
    call GaitEvaluator::evaluate with trajectories at P = 200, and against that call with the records
    the package converts (cyclopt-python-reference), on the point foot and an HM foot. Rounds
-   alternate between Python and C++, and the fastest round of each counts (the machine is shared).
+   alternate between Python and C++, each round a fresh process on either side (a process's
+   memory layout alone moves a 0.1 ms call by up to 20 %), and the fastest round of each counts.
 2. Job.points() of a 10,000-point job stored through the store API, read from the database file.
 
     PYTHONPATH=build/python CYCLOPT_PYTHON_REFERENCE=build/tests/python/cyclopt-python-reference \
@@ -22,7 +23,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests", "pytho
 import cyclopt  # noqa: E402
 from reference import run  # noqa: E402
 
-REPEATS, ROUNDS, POINTS = 300, 9, 10_000
+REPEATS, ROUNDS, POINTS = 300, 15, 10_000
 
 
 def machine() -> str:
@@ -36,20 +37,28 @@ def machine() -> str:
 def evaluate_overhead(foot_name: str, speed: float) -> None:
     foot = cyclopt.Foot.preset(foot_name)
     spec = {"scene": "walker", "task": "optimise", "foot": foot.to_dict(), "speed": speed, "points": 200}
-    x = cyclopt.starting_gait(foot, speed)
     python, cpp, evaluate = [], [], []
     for _ in range(ROUNDS):
         reference = run("evaluate", json.dumps(spec), str(REPEATS))
         cpp.append(reference["call_seconds"])
         evaluate.append(reference["evaluate_seconds"])
-        start = time.perf_counter()
-        for _ in range(REPEATS):
-            cyclopt.evaluate_gait(foot, x, speed, points=200)
-        python.append((time.perf_counter() - start) / REPEATS)
+        round_in_python = [sys.executable, __file__, "--python-round", foot_name, str(speed)]
+        python.append(float(subprocess.run(round_in_python, capture_output=True, text=True, check=True).stdout))
     p, c, e = min(python), min(cpp), min(evaluate)
     print(f"evaluate_gait {foot_name} at {speed} m/s, P = 200: Python {1e3 * p:.3f} ms; C++ evaluate {1e3 * e:.3f} ms, "
           f"ratio {p / e:.3f}; C++ evaluate and records {1e3 * c:.3f} ms, ratio {p / c:.3f} "
           f"(best of {ROUNDS} rounds of {REPEATS})")
+
+
+def python_round(foot_name: str, speed: float) -> float:
+    """Mean seconds of one cyclopt.evaluate_gait over REPEATS calls, its scene cached."""
+    foot = cyclopt.Foot.preset(foot_name)
+    x = cyclopt.starting_gait(foot, speed, points=200)
+    cyclopt.evaluate_gait(foot, x, speed, points=200)
+    start = time.perf_counter()
+    for _ in range(REPEATS):
+        cyclopt.evaluate_gait(foot, x, speed, points=200)
+    return (time.perf_counter() - start) / REPEATS
 
 
 def points_time() -> None:
@@ -70,6 +79,9 @@ def points_time() -> None:
 
 
 if __name__ == "__main__":
+    if sys.argv[1:2] == ["--python-round"]:
+        print(python_round(sys.argv[2], float(sys.argv[3])))
+        sys.exit(0)
     print(machine())
     evaluate_overhead("point", 1.0)
     evaluate_overhead("P1-barefoot-left-HM", 1.3)

@@ -34,7 +34,7 @@ namespace {
 py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 
 // Rows of equal length as a 2-D array (rows x samples).
-py::array_t<double> matrix_array(const std::vector<std::vector<double>>& rows) {
+py::array_t<double> vector_array(const std::vector<std::vector<double>>& rows) {
   const std::size_t n = rows.size(), m = rows.empty() ? 0 : rows.front().size();
   py::array_t<double> a({n, m});
   auto out = a.mutable_unchecked<2>();
@@ -53,22 +53,12 @@ py::dict gait_scalars(const GaitRecord& gait) {
   d["failure"] = gait.failure;
   d["stable"] = gait.stable;  // eq. 5.90
   for (const GaitScalarColumn& c : gait_scalar_columns()) d[c.name] = gait.*c.member;
-  d["bezier_coefficients [rad]"] = matrix_array(gait.bezier_coefficients);  // eq. 5.16, one row per joint
+  d["bezier_coefficients [rad]"] = vector_array(gait.bezier_coefficients);  // eq. 5.16, one row per joint
   return d;
 }
 
 py::dict gait_trajectories(const GaitTrajectoryRecord& t) {
-  py::dict d;
-  d["time [s]"] = vector_array(t.time);
-  d["theta [rad]"] = vector_array(t.theta);
-  d["q [rad]"] = matrix_array(t.q);  // q_s = [theta; q_b]
-  d["q_dot [rad/s]"] = matrix_array(t.q_dot);
-  d["torque [N m]"] = matrix_array(t.torque);                // eq. 5.35
-  d["contact_force [N]"] = matrix_array(t.contact_force);    // [F_1x; F_1z], eq. 5.14
-  d["hip [m]"] = matrix_array(t.hip);                        // [x_H; z_H] from the stance ankle
-  d["swing_contact [m]"] = matrix_array(t.swing_contact);    // [x_C2; z_C2]
-  if (!t.stance_foot_angle.empty()) d["stance_foot_angle [rad]"] = vector_array(t.stance_foot_angle);
-  return d;
+  return trajectory_arrays(t, [](const auto& v) { return vector_array(v); });
 }
 
 }  // namespace cyclopt::python

@@ -92,16 +92,26 @@ Eigen::VectorXd starting_gait(const GaitScene& scene) {
   return walker::gait_start(scene.evaluator, scene.job.speeds.at(0), scene.job.start).x;
 }
 
+// The evaluator's vectors and column-major matrices copied straight into C-ordered NumPy arrays.
+struct EigenArrays {
+  py::array_t<double> operator()(const Eigen::VectorXd& v) const { return py::array_t<double>(v.size(), v.data()); }
+  py::array_t<double> operator()(const Eigen::MatrixXd& m) const {
+    py::array_t<double> a({m.rows(), m.cols()});
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(a.mutable_data(), m.rows(), m.cols()) = m;
+    return a;
+  }
+};
+
 py::tuple evaluate_gait(const GaitScene& scene, const Eigen::VectorXd& x) {
+  walker::PeriodicGait<double> g;
   records::GaitRecord gait;
-  std::optional<records::GaitTrajectoryRecord> trajectory;
   {
     py::gil_scoped_release release;
-    const walker::PeriodicGait<double> g = scene.evaluator.evaluate(x, scene.job.gait_options(scene.job.speeds.at(0)));
+    g = scene.evaluator.evaluate(x, scene.job.gait_options(scene.job.speeds.at(0)));
     gait = jobs::gait_record(g);
-    trajectory = jobs::trajectory_record(g.trajectory);
   }
-  return py::make_tuple(python::gait_scalars(gait), trajectory ? py::object(python::gait_trajectories(*trajectory)) : py::none());
+  if (g.trajectory.time.size() == 0) return py::make_tuple(python::gait_scalars(gait), py::none());
+  return py::make_tuple(python::gait_scalars(gait), python::trajectory_arrays(g.trajectory, EigenArrays{}));
 }
 
 // The optimum as a job would store it: (values as JSON text, scalars, trajectories).

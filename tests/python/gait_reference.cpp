@@ -6,9 +6,8 @@
 //     Prints JSON: the starting gait's "x" at the speed, the "gait" and "trajectory" records
 //     (records/gait_records.hpp) evaluated there (shortest round-trip decimals, so exact), and the
 //     mean seconds of one evaluation over REPEATS calls (default 0: not timed): "evaluate_seconds"
-//     for GaitEvaluator::evaluate with trajectories, "call_seconds" for that and the records that
-//     cyclopt.evaluate_gait turns into Python objects (its scene, the evaluator, built once as the
-//     package keeps it).
+//     for GaitEvaluator::evaluate with trajectories, "call_seconds" for that and the records a
+//     stored point holds (its scene, the evaluator, built once as the package keeps it).
 //   cyclopt-python-reference store DB POINTS SEED
 //     Fills DB with a finished walker sweep of POINTS points through the store API: gaits of the
 //     point foot evaluated at random gait parameters near the starting gait at 1.0 m/s
