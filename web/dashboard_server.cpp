@@ -16,6 +16,7 @@
 
 #include <httplib.h>
 
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -69,6 +70,20 @@ nlohmann::json event_json(const nlohmann::json& event) {
 std::string sse(const char* event, const nlohmann::json& data) {
   // JSON text holds no raw newline: one data line per event.
   return std::string("event: ") + event + "\ndata: " + data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n\n";
+}
+
+// An event stream's provider runs on httplib's thread after the route returned, outside the
+// route's try: whatever it throws closes that stream (the page reconnects), never the program.
+template <class Provider>
+auto guarded(Provider provider) {
+  return [provider = std::move(provider)](std::size_t offset, httplib::DataSink& sink) {
+    try {
+      return provider(offset, sink);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "cyclopt-web: an event stream closed: %s\n", e.what());
+      return false;
+    }
+  };
 }
 
 void error_page(httplib::Response& res, int status, const std::string& message) {
@@ -161,7 +176,7 @@ struct DashboardServer::Impl {
     const std::optional<Viewer> v = viewer(req);
     if (!v) return error_page(res, 401, "Log in first.");
     res.set_header("Cache-Control", "no-store");
-    res.set_chunked_content_provider("text/event-stream", [this, v = *v](std::size_t, httplib::DataSink& sink) {
+    res.set_chunked_content_provider("text/event-stream", guarded([this, v = *v](std::size_t, httplib::DataSink& sink) {
       std::uint64_t seq = 0;
       auto last_write = std::chrono::steady_clock::now();
       while (!fleet.stopped()) {
@@ -183,7 +198,7 @@ struct DashboardServer::Impl {
       }
       sink.done();
       return true;
-    });
+    }));
   }
 
   void job_events(const httplib::Request& req, httplib::Response& res) {
@@ -191,7 +206,7 @@ struct DashboardServer::Impl {
     if (!asked) return;
     const std::int64_t id = asked->second;
     res.set_header("Cache-Control", "no-store");
-    res.set_chunked_content_provider("text/event-stream", [this, id](std::size_t, httplib::DataSink& sink) {
+    res.set_chunked_content_provider("text/event-stream", guarded([this, id](std::size_t, httplib::DataSink& sink) {
       std::uint64_t global = 0, seen = 0;  // the fleet's newest change, the job's last one sent
       std::size_t points = 0, events = 0, curves = 0;
       std::string row_text;
@@ -217,7 +232,7 @@ struct DashboardServer::Impl {
           row_text = row.dump();
           // The database is read only when the row or the live message says something new is there.
           const std::string state = row.is_null() ? "" : row["state"].dump();
-          const std::string points_mark = state + std::to_string(row.value("points_stored", 0)) + "/" +
+          const std::string points_mark = state + std::to_string(row.is_null() ? 0 : row.value("points_stored", 0)) + "/" +
                                           std::to_string(view.progress ? view.progress->points_done : 0);
           const std::string events_mark = row.is_null() ? "" : state + row["phase"].dump() + row["cancel_requested"].dump();
           if (!send_new("curves", "curves", curves, points_mark) || !send_new("solutions", "points", points, points_mark) ||
@@ -236,7 +251,7 @@ struct DashboardServer::Impl {
       }
       sink.done();
       return true;
-    });
+    }));
   }
 
   void report(const httplib::Request& req, httplib::Response& res) {
@@ -294,6 +309,10 @@ DashboardServer::DashboardServer(const DashboardConfig& config, storage::ResultS
   Impl& s = *impl_;
   // Each open page holds one connection (its event stream): room for many pages.
   s.http.new_task_queue = [] { return new httplib::ThreadPool(64); };
+  // cpp-httplib 0.11 watches an idle kept-alive connection by polling it every 10 ms until its
+  // keep-alive timeout (default 5 s): ten freshly opened pages cost more CPU that way than their
+  // event streams. A page's few requests come at load and at the job's end; 1 s is plenty.
+  s.http.set_keep_alive_timeout(1);
   s.http.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Referrer-Policy", "no-referrer"}});
   // Debian's cpp-httplib compresses every text response the browser accepts so, brotli at its
   // slowest quality: a report of a few MB cost seconds of CPU per request. Pages come over loopback
