@@ -3,6 +3,10 @@
 //   node dashboard_bench.js pages URL JOB N        N pages of /job/JOB open until the job ends; prints
 //                                                  "pages ready" once loaded, at the end the browser's
 //                                                  CPU seconds (all its processes) since then
+//   node dashboard_bench.js follow URL JOB         /job/JOB open from before the job starts until it
+//                                                  ends: each text of its progress line as
+//                                                  "<Unix s>\t<text>", then "end\t<state>"
+//                                                  (bench/progress_honesty.sh)
 "use strict";
 const puppeteer = require("puppeteer-core");
 const { execSync } = require("child_process");
@@ -42,6 +46,22 @@ async function main() {
       console.log(`fleet page with ${a} jobs, ${times.length} loads: navigation to table drawn median ` +
                   `${times[Math.floor(times.length / 2)].toFixed(0)} ms, max ${times[times.length - 1].toFixed(0)} ms ` +
                   `(${times.map((t) => t.toFixed(0)).join(", ")})`);
+    } else if (mode === "follow") {
+      const page = await browser.newPage();
+      await page.exposeFunction("recordLine", (t, text) => console.log(`${(t / 1000).toFixed(3)}\t${text}`));
+      await page.goto(url + "/job/" + a, { waitUntil: "domcontentloaded" });
+      await page.waitForSelector("#progress-line");
+      await page.evaluate(() => {
+        const line = document.getElementById("progress-line");
+        const record = () => window.recordLine(performance.timeOrigin + performance.now(), line.textContent);
+        new MutationObserver(record).observe(line, { childList: true, characterData: true, subtree: true });
+        record();
+      });
+      await page.waitForFunction(() => ["done", "incomplete", "failed", "cancelled"].includes(document.getElementById("job-summary").dataset.state),
+                                 { timeout: 0, polling: 200 });
+      await new Promise((r) => setTimeout(r, 1000));  // the final line follows the final state
+      const state = await page.$eval("#job-summary", (e) => e.dataset.state);
+      console.log(`end\t${state}`);
     } else {
       const pages = [];
       // A context each, as if in browsers of their own: one browser keeps at most six connections

@@ -5,13 +5,17 @@
 # meanwhile). The latency from a progress message to the page is measured by the browser test
 # (tests/web/dashboard_browser.sh -> bench/results/dashboard_latency.txt). cycloptd (one worker)
 # and cyclopt-web run inside a private network namespace; chromium through puppeteer-core
-# (deploy/install-deps.sh --browser).
-# usage: dashboard_bench.sh BUILD_DIR [ROUNDS]
+# (deploy/install-deps.sh --browser). With "pinned", cycloptd and cyclopt-web run on CPU 0 and the
+# browser on CPU 1 (taskset), as if the pages were open on the researcher's own machine: the sweep's
+# run time then shows what the pages cost the server, not the browser's drawing on a shared core.
+# usage: dashboard_bench.sh BUILD_DIR [ROUNDS] [pinned]
 set -euo pipefail
 if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
   exec unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
 fi
-BUILD=$(realpath "$1") ROUNDS=${2:-2}
+BUILD=$(realpath "$1") ROUNDS=${2:-2} PINNED=${3:-}
+SERVER_CPU=() BROWSER_CPU=()
+if [ "$PINNED" = pinned ]; then SERVER_CPU=(taskset -c 0) BROWSER_CPU=(taskset -c 1); fi
 HERE=$(dirname "$(realpath "$0")")
 ip link set lo up
 ip route add 224.0.0.0/4 dev lo
@@ -28,10 +32,10 @@ start() {  # a fresh database, cycloptd with one worker, cyclopt-web
   wait 2>/dev/null || true
   rm -rf "$WORK/db" && mkdir "$WORK/db"
   printf '{"database": "%s/db/results.db", "workers": 1, "progress_hz": 5, "max_queued_jobs": 1000}' "$WORK" >"$WORK/cycloptd.json"
-  "$BUILD/server/cycloptd" --config "$WORK/cycloptd.json" >"$WORK/server.log" 2>&1 &
+  "${SERVER_CPU[@]}" "$BUILD/server/cycloptd" --config "$WORK/cycloptd.json" >"$WORK/server.log" 2>&1 &
   SERVER=$!
   for _ in $(seq 100); do "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 && break; sleep 0.1; done
-  "$BUILD/web/cyclopt-web" --config "$WORK/cycloptd.json" --listen 127.0.0.1:$PORT >"$WORK/web.log" 2>&1 &
+  "${SERVER_CPU[@]}" "$BUILD/web/cyclopt-web" --config "$WORK/cycloptd.json" --listen 127.0.0.1:$PORT >"$WORK/web.log" 2>&1 &
   WEB=$!
   for _ in $(seq 50); do (echo >"/dev/tcp/127.0.0.1/$PORT") 2>/dev/null && break; sleep 0.1; done
 }
@@ -39,7 +43,7 @@ cpu_seconds() { awk -v hz="$(getconf CLK_TCK)" '{ print ($14 + $15) / hz }' "/pr
 run_seconds() { "$CYCLOPT" status "$1" | awk '$1 == "run_seconds" { print $2 }'; }
 
 lscpu | grep "Model name"
-echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)${PINNED:+; cycloptd and cyclopt-web on CPU 0, the browser on CPU 1}"
 
 # 1: the fleet page with 200 jobs (one running, 199 queued behind it).
 start
@@ -47,7 +51,7 @@ echo '{"scene": "walker", "task": "foot_sweep", "name": "filler", "foot": "P2-sh
   "sweep": {"parameter": "density", "values": "1:1:200"}}' >"$WORK/filler.json"
 for i in $(seq 200); do "$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "filler-$i" >/dev/null; done
 sleep 1.5
-node "$HERE/dashboard_bench.js" fleet "$URL" 200 5
+"${BROWSER_CPU[@]}" node "$HERE/dashboard_bench.js" fleet "$URL" 200 10
 
 # 2: a point-foot sweep alone and with 10 open pages of it, alternating. The sweep waits in the
 # queue behind a gate job until the pages are loaded (the browser's start-up is not the sweep's).
@@ -60,7 +64,7 @@ for round in $(seq "$ROUNDS"); do
     id=$("$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id "sweep-$round-$pages" | awk '{ print $2 }')
     : >"$WORK/pages.txt"
     if [ "$pages" -gt 0 ]; then
-      node "$HERE/dashboard_bench.js" pages "$URL" "$id" "$pages" >"$WORK/pages.txt" &
+      "${BROWSER_CPU[@]}" node "$HERE/dashboard_bench.js" pages "$URL" "$id" "$pages" >"$WORK/pages.txt" &
       BROWSER=$!
       for _ in $(seq 600); do grep -q "pages ready" "$WORK/pages.txt" && break; sleep 0.1; done
     fi
