@@ -20,16 +20,17 @@ ip route get 239.255.76.67 | grep -q "dev lo" || { echo "multicast not routed to
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 export NODE_PATH=/opt/cyclopt-browser-test/node_modules
 HERE=$(dirname "$(realpath "$0")")
-CYCLOPT=$BUILD/client/cyclopt URL=http://127.0.0.1:8419
+CYCLOPT=$BUILD/client/cyclopt PORT=8419
+URL=http://127.0.0.1:$PORT
 stamp() { /usr/bin/python3 "$HERE/progress_views.py" stamp; }
 printf '{"database": "%s/results.db", "workers": 1, "max_job_seconds": 3600, "progress_hz": 5}' "$OUT" >"$OUT/cycloptd.json"
 "$BUILD/server/cycloptd" --config "$OUT/cycloptd.json" >"$OUT/server.log" 2>&1 &
 SERVER=$!
 trap 'kill $WEB $SERVER 2>/dev/null; wait 2>/dev/null' EXIT
 for _ in $(seq 100); do "$CYCLOPT" --timeout 0.5 list >/dev/null 2>&1 && break; sleep 0.1; done
-"$BUILD/web/cyclopt-web" --config "$OUT/cycloptd.json" --listen 127.0.0.1:8419 >"$OUT/web.log" 2>&1 &
+"$BUILD/web/cyclopt-web" --config "$OUT/cycloptd.json" --listen 127.0.0.1:$PORT >"$OUT/web.log" 2>&1 &
 WEB=$!
-for _ in $(seq 50); do (echo >/dev/tcp/127.0.0.1/8419) 2>/dev/null && break; sleep 0.1; done
+for _ in $(seq 50); do (echo >/dev/tcp/127.0.0.1/$PORT) 2>/dev/null && break; sleep 0.1; done
 
 # A job that holds the one worker until cancelled, so that every view is open before a job starts.
 GATE='{"scene": "walker", "task": "foot_sweep", "name": "gate", "foot": "P2-shoes-left-HMT", "point_delay_ms": 500, "sweep": {"parameter": "density", "values": "1:1:200"}}'

@@ -228,8 +228,9 @@ struct DashboardServer::Impl {
         if (seen == 0 || view.seq > seen) {
           seen = std::max<std::uint64_t>(view.seq, 1);
           const nlohmann::json row = view.row ? to_json(*view.row) : nlohmann::json(nullptr);
-          if (row.dump() != row_text && !send("job", row)) return false;
-          row_text = row.dump();
+          std::string text = row.dump();
+          if (text != row_text && !send("job", row)) return false;
+          row_text = std::move(text);
           // The database is read only when the row or the live message says something new is there.
           const std::string state = row.is_null() ? "" : row["state"].dump();
           const std::string points_mark = state + std::to_string(row.is_null() ? 0 : row.value("points_stored", 0)) + "/" +

@@ -31,10 +31,10 @@ std::span<const GaitScalarColumn> gait_scalar_columns() {
 
 namespace {
 
-py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
+py::array_t<double> numpy_array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
 
 // Rows of equal length as a 2-D array (rows x samples).
-py::array_t<double> vector_array(const std::vector<std::vector<double>>& rows) {
+py::array_t<double> numpy_array(const std::vector<std::vector<double>>& rows) {
   const std::size_t n = rows.size(), m = rows.empty() ? 0 : rows.front().size();
   py::array_t<double> a({n, m});
   auto out = a.mutable_unchecked<2>();
@@ -53,12 +53,12 @@ py::dict gait_scalars(const GaitRecord& gait) {
   d["failure"] = gait.failure;
   d["stable"] = gait.stable;  // eq. 5.90
   for (const GaitScalarColumn& c : gait_scalar_columns()) d[c.name] = gait.*c.member;
-  d["bezier_coefficients [rad]"] = vector_array(gait.bezier_coefficients);  // eq. 5.16, one row per joint
+  d["bezier_coefficients [rad]"] = numpy_array(gait.bezier_coefficients);  // eq. 5.16, one row per joint
   return d;
 }
 
 py::dict gait_trajectories(const GaitTrajectoryRecord& t) {
-  return trajectory_arrays(t, [](const auto& v) { return vector_array(v); });
+  return trajectory_arrays(t, [](const auto& v) { return numpy_array(v); });
 }
 
 }  // namespace cyclopt::python
