@@ -32,7 +32,7 @@ struct FleetJob {
   double submitted_at = kNaN, started_at = kNaN, finished_at = kNaN;  // Unix seconds
 };
 
-// A row of the `jobs` query (storage/result_queries.hpp).
+// A row of the `jobs` query (storage_read/result_queries.hpp).
 FleetJob fleet_job(const nlohmann::json& row);
 // The job with a live progress message of it applied (`top`).
 void apply_progress(FleetJob& job, const cyclopt_lcm::job_progress_t& progress);

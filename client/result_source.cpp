@@ -10,7 +10,7 @@ namespace cyclopt::client {
 storage::QueryPage ResultSource::fetch(storage::QueryRequest r) {
   r.limit = 1000;
   if (reads_database()) {
-    storage::ResultStore& store = local();
+    storage::ResultReader& store = local();
     storage::QueryPage all;
     while (true) {
       storage::QueryPage page = storage::run_query(store, r);
@@ -30,8 +30,8 @@ storage::QueryPage ResultSource::fetch(storage::QueryRequest r) {
   return *page;
 }
 
-storage::ResultStore& ResultSource::local() {
-  if (!store_) store_.emplace(options_.database, storage::OpenMode::read_only);
+storage::ResultReader& ResultSource::local() {
+  if (!store_) store_.emplace(options_.database);
   return *store_;
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// Where a client's queries go: a database file opened read-only (storage/result_queries.hpp run
+// Where a client's queries go: a database file opened read-only (storage_read/result_queries.hpp run
 // in this process) or cycloptd over LCM (ServiceClient, opened on first use with the key file's
 // first key, else $CYCLOPT_KEY_FILE's). `cyclopt` and the Python package (python/) read results
 // through it.
 
-#include "cyclopt/storage/result_queries.hpp"
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 #include "service_client.hpp"
 
 #include <lcm/lcm-cpp.hpp>
@@ -35,12 +35,12 @@ class ResultSource {
   bool reads_database() const { return !options_.database.empty(); }
   // Every row a query matches (all pages); throws NoAnswer, QueryError, std::invalid_argument.
   storage::QueryPage fetch(storage::QueryRequest request);
-  storage::ResultStore& local();
+  storage::ResultReader& local();
   ServiceClient& remote();
 
  private:
   ResultSourceOptions options_;
-  std::optional<storage::ResultStore> store_;
+  std::optional<storage::ResultReader> store_;
   std::optional<lcm::LCM> lcm_;
   std::optional<ServiceClient> client_;
 };

@@ -11,7 +11,7 @@
 #include <cyclopt_lcm/job_progress_t.hpp>
 #include <cyclopt_lcm/query_reply_t.hpp>
 
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "message_bus.hpp"
 
 #include <lcm/lcm-cpp.hpp>

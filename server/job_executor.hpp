@@ -13,7 +13,7 @@
 
 #include "cyclopt/service/job_spec.hpp"
 #include "cyclopt/service/unit_job_context.hpp"
-#include "cyclopt/storage/job_record.hpp"
+#include "cyclopt/storage_read/job_record.hpp"
 
 namespace cyclopt::server {
 

@@ -1,6 +1,6 @@
 #include "job_owners.hpp"
 
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 
 namespace cyclopt::server {
 

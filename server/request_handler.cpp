@@ -12,7 +12,7 @@
 #include "cyclopt/service/spec_fields.hpp"
 #include "cyclopt/jobs/foot/stored_foot_fit.hpp"
 #include "cyclopt/jobs/walker/stored_start.hpp"
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 
 #include <algorithm>

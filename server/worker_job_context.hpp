@@ -11,7 +11,7 @@
 
 #include "cyclopt/service/job_context.hpp"
 #include "cyclopt/service/progress_meter.hpp"
-#include "cyclopt/storage/job_record.hpp"
+#include "cyclopt/storage_read/job_record.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "job_executor.hpp"
 #include "lcm_publisher.hpp"

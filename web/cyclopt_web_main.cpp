@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
   try {
     std::optional<wire::KeyRing> keys;
     if (!config.auth_secret_file.empty()) keys = wire::read_key_file(config.auth_secret_file);
-    storage::ResultStore store(config.database, storage::OpenMode::read_only);
+    storage::ResultReader store(config.database);
     lcm::LCM lcm(url);
     if (!lcm.good()) {
       std::fprintf(stderr, "cyclopt-web: cannot open LCM at '%s'\n", url.c_str());

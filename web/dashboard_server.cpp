@@ -11,8 +11,8 @@
 #include "cyclopt/plot/html_report.hpp"
 #include "cyclopt/plot/job_report.hpp"
 #include "cyclopt/records/json_fields.hpp"
-#include "cyclopt/storage/result_queries.hpp"
-#include "cyclopt/storage/solution_point.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
+#include "cyclopt/storage_read/solution_point.hpp"
 
 #include <httplib.h>
 
@@ -95,10 +95,10 @@ void error_page(httplib::Response& res, int status, const std::string& message) 
 }  // namespace
 
 struct DashboardServer::Impl {
-  Impl(const DashboardConfig& c, storage::ResultStore& s, LiveFleet& f, std::optional<wire::KeyRing> k)
+  Impl(const DashboardConfig& c, storage::ResultReader& s, LiveFleet& f, std::optional<wire::KeyRing> k)
       : config(c), store(s), fleet(f), keys(std::move(k)) {}
   DashboardConfig config;
-  storage::ResultStore& store;
+  storage::ResultReader& store;
   LiveFleet& fleet;
   std::optional<wire::KeyRing> keys;
   httplib::Server http;
@@ -304,7 +304,7 @@ struct DashboardServer::Impl {
   }
 };
 
-DashboardServer::DashboardServer(const DashboardConfig& config, storage::ResultStore& store, LiveFleet& fleet,
+DashboardServer::DashboardServer(const DashboardConfig& config, storage::ResultReader& store, LiveFleet& fleet,
                                  std::optional<wire::KeyRing> keys)
     : impl_(std::make_unique<Impl>(config, store, fleet, std::move(keys))) {
   Impl& s = *impl_;

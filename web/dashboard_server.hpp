@@ -16,7 +16,7 @@
 #include "live_fleet.hpp"
 #include "message_auth.hpp"
 
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <memory>
 #include <optional>
@@ -26,7 +26,7 @@ namespace cyclopt::web {
 class DashboardServer {
  public:
   // `keys`: the server's key file when authentication is on.
-  DashboardServer(const DashboardConfig& config, storage::ResultStore& store, LiveFleet& fleet,
+  DashboardServer(const DashboardConfig& config, storage::ResultReader& store, LiveFleet& fleet,
                   std::optional<wire::KeyRing> keys);
   ~DashboardServer();
   // Serves until stop(); false if it cannot listen on config.host:port.

@@ -23,10 +23,10 @@ struct FleetRow {
   std::int64_t progress_us = 0;  // timestamp of the live progress message applied, 0: none
 };
 
-// A row of the `jobs` query (storage/result_queries.hpp).
+// A row of the `jobs` query (storage_read/result_queries.hpp).
 FleetRow fleet_row(const nlohmann::json& job_row);
 
-// Queued jobs start in the order of their ids (storage::ResultStore claims the lowest first).
+// Queued jobs start in the order of their ids (storage::ResultStore::claim_next takes the lowest first).
 void number_queue(std::vector<FleetRow>& rows);
 
 // Times as ISO 8601 local time of the server to the minute (as `cyclopt list`), NaN as null.

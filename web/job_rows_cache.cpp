@@ -4,7 +4,7 @@
 
 namespace cyclopt::web {
 
-JobRowsCache::JobRowsCache(storage::ResultStore& store, std::map<std::string, Convert> kinds)
+JobRowsCache::JobRowsCache(storage::ResultReader& store, std::map<std::string, Convert> kinds)
     : store_(store), kinds_(std::move(kinds)) {}
 
 nlohmann::json JobRowsCache::rows_after(std::int64_t id, const std::string& what, std::size_t have, const std::string& mark) {

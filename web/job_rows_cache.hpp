@@ -4,7 +4,7 @@
 // Rows are appended only (a job's curves, points and events are never rewritten), so each page
 // asks for the rows after the ones it has. Thread-safe.
 
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -22,7 +22,7 @@ class JobRowsCache {
   // `what`: a row kind of storage::run_query ("curves", "solutions", "events"), each row stored as
   // `convert` makes it.
   using Convert = std::function<nlohmann::json(const nlohmann::json& row)>;
-  JobRowsCache(storage::ResultStore& store, std::map<std::string, Convert> kinds);
+  JobRowsCache(storage::ResultReader& store, std::map<std::string, Convert> kinds);
 
   // The rows of `what` of job `id` after the first `have`. The database is read again only when
   // `mark` (what the caller knows of the job: its stored point count, its state) differs from the
@@ -34,7 +34,7 @@ class JobRowsCache {
     std::string mark;
     nlohmann::json rows = nlohmann::json::array();
   };
-  storage::ResultStore& store_;
+  storage::ResultReader& store_;
   const std::map<std::string, Convert> kinds_;
   std::mutex mutex_;
   std::map<std::pair<std::int64_t, std::string>, Rows> cache_;

@@ -4,7 +4,7 @@
 
 namespace cyclopt::web {
 
-nlohmann::json all_rows(storage::ResultStore& store, storage::QueryRequest request) {
+nlohmann::json all_rows(storage::ResultReader& store, storage::QueryRequest request) {
   request.limit = channels::kMaxQueryLimit;
   nlohmann::json rows = nlohmann::json::array();
   while (true) {

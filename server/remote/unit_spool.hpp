@@ -19,7 +19,7 @@
 // duplicates a point.
 
 #include "cyclopt/service/job_context.hpp"
-#include "cyclopt/storage/solution_point.hpp"
+#include "cyclopt/storage_read/solution_point.hpp"
 
 #include <nlohmann/json.hpp>
 

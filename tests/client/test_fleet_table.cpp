@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Rows as the `jobs` query returns them (storage/result_queries.hpp), with long names and feet.
+// Rows as the `jobs` query returns them (storage_read/result_queries.hpp), with long names and feet.
 std::vector<FleetJob> fleet() {
   const double t = 1.7e9;
   std::vector<FleetJob> jobs;

@@ -11,7 +11,7 @@
 #include "cyclopt/records/foot_comparison_records.hpp"
 #include "cyclopt/jobs/walker/walker_points.hpp"
 #include "cyclopt/jobs/walker/walker_records.hpp"
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 #include "cyclopt/walker/gait_evaluation.hpp"
 #include "cyclopt/walker/starting_gait.hpp"

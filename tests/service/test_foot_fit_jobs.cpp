@@ -7,7 +7,7 @@
 #include "cyclopt/plot/foot_fit_figures.hpp"
 #include "cyclopt/records/foot_fit_record.hpp"
 #include "cyclopt/service/job_spec.hpp"
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "cyclopt_channels.hpp"
 #include "memq_server_fixture.hpp"
 #include "spec_rejection.hpp"

@@ -19,7 +19,7 @@
 #include "cyclopt/foot_fit/ankle_track.hpp"
 #include "cyclopt/foot_fit/synthetic_trials.hpp"
 #include "cyclopt/io/foot_fit_json.hpp"
-#include "cyclopt/storage/sqlite_handle.hpp"
+#include "cyclopt/storage_read/sqlite_handle.hpp"
 #include "memq_server_fixture.hpp"
 
 #include <gtest/gtest.h>

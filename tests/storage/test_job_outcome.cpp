@@ -3,7 +3,7 @@
 // The summary names the points. Only required points count (a sweep's continuation runs do not),
 // and files made before the state 'incomplete' existed are migrated when a server opens them.
 #include "cyclopt/storage/job_outcome.hpp"
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 
 #include <gtest/gtest.h>

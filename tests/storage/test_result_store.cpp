@@ -1,6 +1,6 @@
 // Results store: idempotent submission, queue transitions, crash recovery, unique points,
 // read-only access, queries.
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
 
 #include <gtest/gtest.h>
@@ -108,9 +108,10 @@ TEST_F(ResultStoreTest, ReadOnlyOpenSeesCommittedRowsAndCannotWrite) {
   ResultStore w(path_);
   const auto id = w.submit("a", "walker", "foot_sweep", "{}").job_id;
   w.store_point(id, point(1));
-  ResultStore r(path_, OpenMode::read_only);
+  ResultReader r(path_);
   EXPECT_EQ(run_query(r, query_for("solutions", id)).total, 1);
-  EXPECT_THROW(r.submit("b", "walker", "foot_sweep", "{}"), StorageError);
+  EXPECT_THROW(r.connection().exec("DELETE FROM solutions"), StorageError);
+  EXPECT_EQ(run_query(w, query_for("solutions", id)).total, 1);
 }
 
 TEST_F(ResultStoreTest, QueriesNameTheBadField) {

@@ -1,11 +1,11 @@
-// The results schema version (storage/schema_version.hpp): a new file records kSchemaVersion; a
+// The results schema version (storage_read/schema_version.hpp): a new file records kSchemaVersion; a
 // version-1 file (the first deployed layout) is migrated by a read-write open and refused by a
 // read-only one; a newer or unreadable version is refused without touching the file; every
 // refusal names both versions.
-#include "cyclopt/storage/result_queries.hpp"
 #include "cyclopt/storage/result_store.hpp"
-#include "cyclopt/storage/results_schema.hpp"
-#include "cyclopt/storage/sqlite_handle.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
+#include "cyclopt/storage_read/results_schema.hpp"
+#include "cyclopt/storage_read/sqlite_handle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,10 +36,14 @@ class SchemaVersionTest : public ::testing::Test {
     Connection c(path_, false);
     Statement(c, "UPDATE schema_info SET value = ? WHERE key = 'version'").bind(1, std::string_view(v)).run();
   }
-  // The error of opening the file, "" if it opens.
+  // The error of opening the file with a ResultStore (read_write) or a ResultReader, "" if it opens.
+  enum class OpenMode { read_write, read_only };
   std::string open_error(OpenMode mode) {
     try {
-      ResultStore s(path_, mode);
+      if (mode == OpenMode::read_only)
+        ResultReader r(path_);
+      else
+        ResultStore s(path_);
     } catch (const StorageError& e) {
       return e.what();
     }

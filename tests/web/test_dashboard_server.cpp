@@ -4,7 +4,8 @@
 #include "dashboard_server.hpp"
 #include "store_rows.hpp"
 
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 
 #include <gtest/gtest.h>
 #include <httplib.h>

@@ -5,7 +5,7 @@
 // executor's context takes calls from all of them at once.
 
 #include "cyclopt/service/progress_report.hpp"
-#include "cyclopt/storage/solution_point.hpp"
+#include "cyclopt/storage_read/solution_point.hpp"
 
 #include <cstdint>
 #include <functional>

@@ -12,8 +12,8 @@
 // submitted (jobs/walker/stored_start.hpp, jobs/foot/stored_foot_fit.hpp), and the job keeps the
 // spec as submitted and its resolved spec with the values (resolved_spec.hpp).
 
-#include "cyclopt/storage/job_record.hpp"
-#include "cyclopt/storage/solution_point.hpp"
+#include "cyclopt/storage_read/job_record.hpp"
+#include "cyclopt/storage_read/solution_point.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -5,8 +5,8 @@
 // did not converge (with their status) and how many are missing, so "done" never hides a solve
 // that ended at max_iterations.
 
-#include "cyclopt/storage/job_state.hpp"
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/job_state.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
 #include "cyclopt/storage/result_store.hpp"
 
-#include "cyclopt/storage/results_schema.hpp"
-#include "cyclopt/storage/schema_version.hpp"
+#include "cyclopt/storage_read/results_schema.hpp"
+#include "cyclopt/storage_read/schema_version.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -17,49 +17,9 @@ double unix_now() {
 
 namespace {
 
-constexpr const char* kJobColumns =
-    "j.id, j.request_id, j.scene, j.task, j.spec_json, j.state, j.cancel_requested, j.attempts, j.submitted_at, "
-    "j.started_at, j.finished_at, j.points_total, "
-    "(SELECT count(*) FROM solutions s WHERE s.job_id = j.id), j.run_seconds, j.publish_seconds, j.error, "
-    "j.points_converged, j.program_version, j.seeds_json, j.resolved_spec_json, j.isa_level, j.build_flags, "
-    "j.progress_percent, j.phase, j.eta_seconds, j.best_objective, j.progress_at";
-
-std::optional<double> optional_real(const Statement& s, int col) {
-  return s.is_null(col) ? std::nullopt : std::optional<double>(s.real(col));
-}
-
-JobRecord read_job(const Statement& s) {
-  JobRecord r;
-  r.id = s.int64(0);
-  r.request_id = s.text(1);
-  r.scene = s.text(2);
-  r.task = s.text(3);
-  r.spec_json = s.text(4);
-  r.state = job_state_from_string(s.text(5)).value_or(JobState::failed);
-  r.cancel_requested = s.int64(6) != 0;
-  r.attempts = static_cast<int>(s.int64(7));
-  r.submitted_at = s.real(8);
-  r.started_at = optional_real(s, 9);
-  r.finished_at = optional_real(s, 10);
-  if (!s.is_null(11)) r.points_total = static_cast<int>(s.int64(11));
-  r.points_stored = static_cast<int>(s.int64(12));
-  r.run_seconds = s.real(13);
-  r.publish_seconds = s.real(14);
-  r.error = s.text(15);
-  if (!s.is_null(16)) r.points_converged = static_cast<int>(s.int64(16));
-  r.program_version = s.text(17);
-  r.seeds_json = s.text(18);
-  r.resolved_spec_json = s.text(19);
-  r.isa_level = s.text(20);
-  r.build_flags = s.text(21);
-  r.progress = {optional_real(s, 22), s.text(23), optional_real(s, 24), optional_real(s, 25), optional_real(s, 26)};
-  return r;
-}
-
 // A server needs to write the file and, in WAL mode, to create FILE-wal and FILE-shm beside it:
 // say so before SQLite's "unable to open database file" or "attempt to write a readonly database".
-const std::string& checked_path(const std::string& path, OpenMode mode) {
-  if (mode == OpenMode::read_only) return path;
+const std::string& writable_path(const std::string& path) {
   namespace fs = std::filesystem;
   const fs::path file(path);
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -72,6 +32,13 @@ const std::string& checked_path(const std::string& path, OpenMode mode) {
   if (fs::exists(file, ec) && ::access(file.c_str(), W_OK) != 0)
     throw StorageError("database '" + path + "': the file is read-only");
   return path;
+}
+
+// Records kSchemaVersion, after the migrations of a read-write open.
+void record_schema_version(Connection& db) {
+  Statement(db, "INSERT OR REPLACE INTO schema_info (key, value) VALUES ('version', ?)")
+      .bind(1, std::string_view(std::to_string(kSchemaVersion)))
+      .run();
 }
 
 // PRAGMA quick_check: a server must not write new jobs into a damaged file.
@@ -150,13 +117,7 @@ void allow_every_job_state(Connection& db) {
 
 }  // namespace
 
-ResultStore::ResultStore(const std::string& path, OpenMode mode)
-    : db_(checked_path(path, mode), mode == OpenMode::read_only) {
-  if (mode == OpenMode::read_only) {
-    db_.exec("PRAGMA query_only = ON");
-    check_schema_version(stored_schema_version(db_, path), path, true);
-    return;
-  }
+ResultStore::ResultStore(const std::string& path) : ResultReader(writable_path(path), ReadWrite{}) {
   check_integrity(db_, path);
   check_schema_version(stored_schema_version(db_, path), path, false);
   db_.exec("PRAGMA journal_mode = WAL");
@@ -234,9 +195,7 @@ std::optional<JobRecord> ResultStore::claim_next() {
   Statement upd(db_, "UPDATE jobs SET state = 'running', attempts = attempts + 1, started_at = ? WHERE id = ?");
   upd.bind(1, unix_now()).bind(2, id).run();
   add_event_locked(id, "started", "");
-  Statement get(db_, std::string("SELECT ") + kJobColumns + " FROM jobs j WHERE j.id = ?");
-  get.bind(1, id).step();
-  JobRecord r = read_job(get);
+  std::optional<JobRecord> r = job_locked(id);
   tx.commit();
   return r;
 }
@@ -385,50 +344,10 @@ bool ResultStore::store_point(std::int64_t job_id, const SolutionPoint& p) {
   return true;
 }
 
-std::set<PointKey> ResultStore::stored_points(std::int64_t job_id) {
-  std::lock_guard lock(mutex_);
-  std::set<PointKey> keys;
-  Statement q(db_, "SELECT curve_index, point_index FROM solutions WHERE job_id = ?");
-  q.bind(1, job_id);
-  while (q.step()) keys.insert({static_cast<int>(q.int64(0)), static_cast<int>(q.int64(1))});
-  return keys;
-}
-
-std::optional<std::string> ResultStore::point_values(std::int64_t job_id, PointKey key) {
-  std::lock_guard lock(mutex_);
-  Statement q(db_, "SELECT values_json FROM solutions WHERE job_id = ? AND curve_index = ? AND point_index = ?");
-  q.bind(1, job_id).bind(2, std::int64_t{key.curve_index}).bind(3, std::int64_t{key.point_index});
-  if (!q.step()) return std::nullopt;
-  return q.text(0);
-}
-
-std::vector<RequiredPoint> ResultStore::required_points(std::int64_t job_id) {
-  std::lock_guard lock(mutex_);
-  std::vector<RequiredPoint> points;
-  Statement q(db_,
-              "SELECT s.curve_index, s.point_index, s.parameter, s.status, coalesce(c.parameter_name, '') "
-              "FROM solutions s LEFT JOIN curves c ON c.job_id = s.job_id AND c.curve_index = s.curve_index "
-              "WHERE s.job_id = ? AND s.required = 1 ORDER BY s.curve_index, s.point_index");
-  q.bind(1, job_id);
-  while (q.step())
-    points.push_back({{static_cast<int>(q.int64(0)), static_cast<int>(q.int64(1))},
-                      q.is_null(2) ? std::numeric_limits<double>::quiet_NaN() : q.real(2), q.text(3), q.text(4)});
-  return points;
-}
-
 void ResultStore::store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value) {
   std::lock_guard lock(mutex_);
   Statement ins(db_, "INSERT OR REPLACE INTO checkpoints (job_id, key, value) VALUES (?, ?, ?)");
   ins.bind(1, job_id).bind(2, key).bind(3, value).run();
-}
-
-std::map<std::string, std::string> ResultStore::checkpoints(std::int64_t job_id) {
-  std::lock_guard lock(mutex_);
-  std::map<std::string, std::string> out;
-  Statement q(db_, "SELECT key, value FROM checkpoints WHERE job_id = ?");
-  q.bind(1, job_id);
-  while (q.step()) out.emplace(q.text(0), q.text(1));
-  return out;
 }
 
 void ResultStore::add_event(std::int64_t job_id, const std::string& kind, const std::string& message) {
@@ -452,48 +371,6 @@ void ResultStore::add_event_if_room_locked(std::int64_t job_id, const std::strin
     tx.commit();
   } catch (const StorageError&) {  // SQLITE_FULL (which may roll back the whole transaction): drop the log line
   }
-}
-
-std::optional<JobRecord> ResultStore::job(std::int64_t job_id) {
-  std::lock_guard lock(mutex_);
-  Statement q(db_, std::string("SELECT ") + kJobColumns + " FROM jobs j WHERE j.id = ?");
-  if (!q.bind(1, job_id).step()) return std::nullopt;
-  return read_job(q);
-}
-
-std::vector<JobRecord> ResultStore::jobs(std::optional<JobState> state, int offset, int limit,
-                                         const std::optional<std::string>& sender) {
-  std::lock_guard lock(mutex_);
-  Statement q(db_, std::string("SELECT ") + kJobColumns +
-                       " FROM jobs j WHERE (?1 IS NULL OR j.state = ?1) AND (?4 IS NULL OR j.sender = ?4) "
-                       "ORDER BY j.id LIMIT ?2 OFFSET ?3");
-  if (state)
-    q.bind(1, to_string(*state));
-  else
-    q.bind(1, std::nullopt);
-  q.bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
-  if (sender)
-    q.bind(4, *sender);
-  else
-    q.bind(4, std::nullopt);
-  std::vector<JobRecord> out;
-  while (q.step()) out.push_back(read_job(q));
-  return out;
-}
-
-int ResultStore::count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender) {
-  std::lock_guard lock(mutex_);
-  Statement q(db_, "SELECT count(*) FROM jobs WHERE (?1 IS NULL OR state = ?1) AND (?2 IS NULL OR sender = ?2)");
-  if (state)
-    q.bind(1, to_string(*state));
-  else
-    q.bind(1, std::nullopt);
-  if (sender)
-    q.bind(2, *sender);
-  else
-    q.bind(2, std::nullopt);
-  q.step();
-  return static_cast<int>(q.int64(0));
 }
 
 }  // namespace cyclopt::storage

@@ -1,11 +1,11 @@
 #pragma once
-// The results database and durable job queue (schema: results_schema.hpp). Thread-safe: one
-// connection guarded by a mutex; every write is its own transaction, so a point is durable the
-// moment store_point() returns. Open read-only for local queries while a server writes.
+// The results database and durable job queue (schema: storage_read/results_schema.hpp), opened
+// for writing: the server's one writer. It reads what a ResultReader reads
+// (storage_read/result_reader.hpp; the clients open the file with that while a server writes).
+// Thread-safe: one connection guarded by a mutex; every write is its own transaction, so a point
+// is durable the moment store_point() returns.
 
-#include "cyclopt/storage/job_record.hpp"
-#include "cyclopt/storage/solution_point.hpp"
-#include "cyclopt/storage/sqlite_handle.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <cstdint>
 #include <map>
@@ -16,16 +16,6 @@
 #include <vector>
 
 namespace cyclopt::storage {
-
-enum class OpenMode { read_write, read_only };
-
-// What the outcome of a job is judged by (job_outcome.hpp): a stored required point's status.
-struct RequiredPoint {
-  PointKey key;
-  double parameter;
-  std::string status;
-  std::string parameter_name;  // of its curve ("" if the curve was not declared)
-};
 
 // What a submission adds to the queue. sender identifies the submitter for the queue quota (the
 // authenticated key, "host <address>" for an unauthenticated client whose address the server
@@ -71,9 +61,11 @@ struct RecoverySummary {
   int cancelled = 0;
 };
 
-class ResultStore {
+class ResultStore : public ResultReader {
  public:
-  ResultStore(const std::string& path, OpenMode mode = OpenMode::read_write);
+  // Creates the file if need be, checks its integrity and migrates an older schema; throws
+  // StorageError naming what is wrong (a directory that does not exist or is not writable).
+  explicit ResultStore(const std::string& path);
 
   // Queue.
   SubmitOutcome submit(const Submission& s, const SenderQuota& quota);
@@ -102,29 +94,12 @@ class ResultStore {
   void set_progress(std::int64_t job_id, const JobProgressRecord& progress);
   void add_curve(std::int64_t job_id, int curve_index, const std::string& name, const std::string& parameter_name);
   bool store_point(std::int64_t job_id, const SolutionPoint& p);  // false: point was already stored
-  std::set<PointKey> stored_points(std::int64_t job_id);
-  // The values_json of a stored point; nullopt if the job has no such point.
-  std::optional<std::string> point_values(std::int64_t job_id, PointKey key);
-  // The stored points with required = 1 (solution_point.hpp), by curve and point index.
-  std::vector<RequiredPoint> required_points(std::int64_t job_id);
   void store_checkpoint(std::int64_t job_id, const std::string& key, const std::string& value);  // replaces
-  std::map<std::string, std::string> checkpoints(std::int64_t job_id);
   void add_event(std::int64_t job_id, const std::string& kind, const std::string& message);
-
-  // Reads.
-  std::optional<JobRecord> job(std::int64_t job_id);
-  // sender: only the jobs it submitted (Submission::sender).
-  std::vector<JobRecord> jobs(std::optional<JobState> state, int offset, int limit,
-                              const std::optional<std::string>& sender = std::nullopt);
-  int count_jobs(std::optional<JobState> state, const std::optional<std::string>& sender = std::nullopt);
-  Connection& connection() { return db_; }  // for result_queries.hpp; lock with mutex()
-  std::mutex& mutex() { return mutex_; }
 
  private:
   void add_event_locked(std::int64_t job_id, const std::string& kind, const std::string& message);
   void add_event_if_room_locked(std::int64_t job_id, const std::string& kind, const std::string& message);
-  Connection db_;
-  std::mutex mutex_;
 };
 
 double unix_now();

@@ -8,7 +8,7 @@ namespace cyclopt::jobs {
 
 using namespace service;  // the job-kind infrastructure: JobKind, JobContext, the spec fields
 
-nlohmann::json with_stored_foot_fit(nlohmann::json spec, storage::ResultStore& store) {
+nlohmann::json with_stored_foot_fit(nlohmann::json spec, storage::ResultReader& store) {
   for (const StoredFitReference& r : stored_fit_references(spec)) {
     const std::string job_field = r.path + ".fit.job", model_field = r.path + ".fit.model";
     const std::string job_name = "job " + std::to_string(r.job_id);

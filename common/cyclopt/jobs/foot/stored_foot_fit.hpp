@@ -8,13 +8,13 @@
 // that does not exist, is not a foot_fit job, has not finished, or whose fit of that model is
 // missing or did not converge is rejected naming foot.fit.job or foot.fit.model.
 
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <nlohmann/json.hpp>
 
 namespace cyclopt::jobs {
 
 // `spec` with every stored-fit foot replaced by the fitted foot spec. Throws SpecError.
-nlohmann::json with_stored_foot_fit(nlohmann::json spec, storage::ResultStore& store);
+nlohmann::json with_stored_foot_fit(nlohmann::json spec, storage::ResultReader& store);
 
 }  // namespace cyclopt::jobs

@@ -39,7 +39,7 @@ nlohmann::json stored_point_foot(const storage::JobRecord& job, const nlohmann::
 
 }  // namespace
 
-nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& store) {
+nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultReader& store) {
   const std::optional<StoredPointReference> reference = stored_point_reference(spec);
   if (!reference) return spec;
   const auto [job_id, key, curve_given] = *reference;

@@ -8,7 +8,7 @@
 // exist, a point without x, or a job of another scene, foot model or Bezier degree is rejected
 // naming start.job, start.curve or start.point.
 
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +16,6 @@ namespace cyclopt::jobs {
 
 // `spec` with a stored-point "start" replaced by the point's x; any other spec unchanged. Throws
 // SpecError.
-nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultStore& store);
+nlohmann::json with_stored_start(nlohmann::json spec, storage::ResultReader& store);
 
 }  // namespace cyclopt::jobs

@@ -9,7 +9,7 @@
 #include "cyclopt/records/sensitivity_records.hpp"
 #include "cyclopt/records/walker_point_record.hpp"
 #include "cyclopt/service/job_context.hpp"
-#include "cyclopt/storage/solution_point.hpp"
+#include "cyclopt/storage_read/solution_point.hpp"
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 

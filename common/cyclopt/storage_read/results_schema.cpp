@@ -1,4 +1,4 @@
-#include "cyclopt/storage/results_schema.hpp"
+#include "cyclopt/storage_read/results_schema.hpp"
 
 namespace cyclopt::storage {
 

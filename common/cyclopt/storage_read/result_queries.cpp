@@ -1,4 +1,4 @@
-#include "cyclopt/storage/result_queries.hpp"
+#include "cyclopt/storage_read/result_queries.hpp"
 
 #include "cyclopt/records/json_fields.hpp"
 
@@ -53,7 +53,7 @@ nlohmann::json json_cell(const std::string& text, const char* column) {
 }
 
 // Rows of `what` (solutions, events, curves, trajectories) belonging to a job.
-int count(ResultStore& store, const std::string& what, std::int64_t job_id) {
+int count(ResultReader& store, const std::string& what, std::int64_t job_id) {
   std::lock_guard lock(store.mutex());
   Statement q(store.connection(),
               what == "trajectories"
@@ -66,7 +66,7 @@ int count(ResultStore& store, const std::string& what, std::int64_t job_id) {
 // Runs `sql` (parameters: job id, limit, offset) under the store's lock; one JSON row per result
 // row, built by `row`.
 template <class RowFn>
-nlohmann::json paged_rows(ResultStore& store, const char* sql, std::int64_t job_id, int offset, int limit, RowFn row) {
+nlohmann::json paged_rows(ResultReader& store, const char* sql, std::int64_t job_id, int offset, int limit, RowFn row) {
   std::lock_guard lock(store.mutex());
   Statement q(store.connection(), sql);
   q.bind(1, job_id).bind(2, std::int64_t{limit}).bind(3, std::int64_t{offset});
@@ -75,7 +75,7 @@ nlohmann::json paged_rows(ResultStore& store, const char* sql, std::int64_t job_
   return rows;
 }
 
-nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+nlohmann::json solution_rows(ResultReader& store, std::int64_t job_id, int offset, int limit) {
   return paged_rows(store,
                     "SELECT curve_index, point_index, parameter, objective, constraint_violation, iterations, status, "
                     "values_json, solved_at FROM solutions WHERE job_id = ? ORDER BY curve_index, point_index "
@@ -93,7 +93,7 @@ nlohmann::json solution_rows(ResultStore& store, std::int64_t job_id, int offset
                     });
 }
 
-nlohmann::json trajectory_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+nlohmann::json trajectory_rows(ResultReader& store, std::int64_t job_id, int offset, int limit) {
   return paged_rows(store,
                     "SELECT s.curve_index, s.point_index, t.format, t.data FROM trajectories t JOIN solutions s "
                     "ON s.id = t.solution_id WHERE s.job_id = ? ORDER BY s.curve_index, s.point_index "
@@ -107,14 +107,14 @@ nlohmann::json trajectory_rows(ResultStore& store, std::int64_t job_id, int offs
                     });
 }
 
-nlohmann::json event_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+nlohmann::json event_rows(ResultReader& store, std::int64_t job_id, int offset, int limit) {
   return paged_rows(store, "SELECT at, kind, message FROM events WHERE job_id = ? ORDER BY id LIMIT ? OFFSET ?", job_id,
                     offset, limit, [](const Statement& q) {
                       return nlohmann::json{{"at", q.real(0)}, {"kind", utf8(q.text(1))}, {"message", utf8(q.text(2))}};
                     });
 }
 
-nlohmann::json curve_rows(ResultStore& store, std::int64_t job_id, int offset, int limit) {
+nlohmann::json curve_rows(ResultReader& store, std::int64_t job_id, int offset, int limit) {
   return paged_rows(store,
                     "SELECT c.curve_index, c.name, c.parameter_name, "
                     "(SELECT count(*) FROM solutions s WHERE s.job_id = c.job_id AND s.curve_index = c.curve_index) "
@@ -149,7 +149,7 @@ std::pair<std::string, std::string> job_labels(const std::string& spec_json) {
   return {utf8(name), utf8(feet)};
 }
 
-JobRecord existing_job(ResultStore& store, std::int64_t job_id) {
+JobRecord existing_job(ResultReader& store, std::int64_t job_id) {
   std::optional<JobRecord> j = store.job(job_id);
   if (!j) throw std::invalid_argument("job_id: no job " + std::to_string(job_id));
   return *j;
@@ -203,7 +203,7 @@ QueryRequest query_for(std::string what, std::int64_t job_id, std::string state)
   return r;
 }
 
-QueryPage run_query(ResultStore& store, const QueryRequest& r) {
+QueryPage run_query(ResultReader& store, const QueryRequest& r) {
   if (r.offset < 0) throw std::invalid_argument("offset: must be >= 0, got " + std::to_string(r.offset));
   if (r.limit < 1 || r.limit > 1000)
     throw std::invalid_argument("limit: must be in [1, 1000], got " + std::to_string(r.limit));

@@ -1,6 +1,6 @@
-#include "cyclopt/storage/schema_version.hpp"
+#include "cyclopt/storage_read/schema_version.hpp"
 
-#include "cyclopt/storage/results_schema.hpp"
+#include "cyclopt/storage_read/results_schema.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -33,12 +33,6 @@ void check_schema_version(std::optional<int> version, const std::string& path, b
   if (read_only)
     throw StorageError(found + "; " + ours + " and migrates older files when a server opens them read-write "
                        "(cycloptd --database '" + path + "'); a read-only open cannot migrate");
-}
-
-void record_schema_version(Connection& db) {
-  Statement(db, "INSERT OR REPLACE INTO schema_info (key, value) VALUES ('version', ?)")
-      .bind(1, std::string_view(std::to_string(kSchemaVersion)))
-      .run();
 }
 
 }  // namespace cyclopt::storage

@@ -2,8 +2,8 @@
 // The read side shared by the server (answering query_request_t over LCM) and the client
 // (reading a database file opened read-only): rows as JSON objects, paged.
 
-#include "cyclopt/storage/job_record.hpp"
-#include "cyclopt/storage/result_store.hpp"
+#include "cyclopt/storage_read/job_record.hpp"
+#include "cyclopt/storage_read/result_reader.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -32,7 +32,7 @@ struct QueryPage {
 
 // Throws std::invalid_argument naming the field ("what", "state", "job_id", "offset", "limit")
 // and the admissible values.
-QueryPage run_query(ResultStore& store, const QueryRequest& request);
+QueryPage run_query(ResultReader& store, const QueryRequest& request);
 
 nlohmann::json to_json(const JobRecord& job, bool with_spec);
 

@@ -1,7 +1,7 @@
 #pragma once
 // One row of the jobs table (results_schema.hpp) as C++ sees it.
 
-#include "cyclopt/storage/job_state.hpp"
+#include "cyclopt/storage_read/job_state.hpp"
 
 #include <cstdint>
 #include <optional>

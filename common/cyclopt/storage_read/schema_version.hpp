@@ -1,10 +1,11 @@
 #pragma once
 // The results schema version a database file records (schema_info.version, results_schema.hpp)
 // and what an open does with it: a file of this build's version opens; an older one is migrated
-// by a read-write open (ResultStore) and refused by a read-only one, which cannot write; a newer
-// one (written by a later build) is refused. Refusals throw StorageError naming both versions.
+// by a read-write open (storage/result_store.hpp) and refused by a read-only one
+// (result_reader.hpp), which cannot write; a newer one (written by a later build) is refused.
+// Refusals throw StorageError naming both versions.
 
-#include "cyclopt/storage/sqlite_handle.hpp"
+#include "cyclopt/storage_read/sqlite_handle.hpp"
 
 #include <optional>
 #include <string>
@@ -17,8 +18,5 @@ std::optional<int> stored_schema_version(const Connection& db, const std::string
 
 // Throws StorageError unless a file at `version` may be opened (`read_only`: without migrating).
 void check_schema_version(std::optional<int> version, const std::string& path, bool read_only);
-
-// Records kSchemaVersion, after the migrations of a read-write open.
-void record_schema_version(Connection& db);
 
 }  // namespace cyclopt::storage

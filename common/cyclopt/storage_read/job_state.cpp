@@ -1,4 +1,4 @@
-#include "cyclopt/storage/job_state.hpp"
+#include "cyclopt/storage_read/job_state.hpp"
 
 #include <array>
 

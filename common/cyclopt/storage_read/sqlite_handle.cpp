@@ -1,4 +1,4 @@
-#include "cyclopt/storage/sqlite_handle.hpp"
+#include "cyclopt/storage_read/sqlite_handle.hpp"
 
 #include <sqlite3.h>
 
