@@ -8,6 +8,7 @@
 
 #include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/service/job_spec.hpp"
+#include "memory_job.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,48 +24,6 @@ namespace cyclopt::service {
 namespace {
 
 using namespace cyclopt::jobs;
-
-// A job context in memory: what the units did to their job.
-class MemoryJob final : public JobContext {
- public:
-  std::int64_t job_id() const override { return 7; }
-  const JobLimits& limits() const override { return limits_; }
-  void report_progress(const ProgressReport& r) override {
-    const std::lock_guard<std::mutex> lock(mutex);
-    reports.push_back(r);
-  }
-  void count_iterations(int) override {}
-  void announce(int) override {}
-  void add_curve(int curve, const std::string&, const std::string&) override {
-    const std::lock_guard<std::mutex> lock(mutex);
-    curves.push_back(curve);
-  }
-  bool store_point(const storage::SolutionPoint& p) override {
-    const std::lock_guard<std::mutex> lock(mutex);  // a job context takes calls from all its units at once
-    return points.insert(p.key).second;
-  }
-  std::set<storage::PointKey> already_stored_points() override {
-    const std::lock_guard<std::mutex> lock(mutex);
-    return points;
-  }
-  void store_checkpoint(const std::string& key, const std::string& value) override {
-    const std::lock_guard<std::mutex> lock(mutex);  // units in parallel store at once
-    checkpoints[key] = value;
-  }
-  std::map<std::string, std::string> stored_checkpoints() override {
-    const std::lock_guard<std::mutex> lock(mutex);
-    return checkpoints;
-  }
-  StopReason stop_reason() override { return stop; }
-
-  JobLimits limits_;
-  std::vector<int> curves;
-  std::set<storage::PointKey> points;
-  std::vector<ProgressReport> reports;
-  std::map<std::string, std::string> checkpoints;
-  std::atomic<StopReason> stop{StopReason::none};
-  std::mutex mutex;
-};
 
 // Waits up to 10 s for `done`; false on timeout (so a broken runner fails the test, not hangs it).
 template <class Done>

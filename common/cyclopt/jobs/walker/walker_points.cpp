@@ -87,6 +87,9 @@ storage::SolutionPoint point_of(const walker::GaitOptimum& opt, storage::PointKe
 }
 
 bool CurveStore::operator()(const continuation::CurvePoint& c) {
+  // A solve the job stopped (cancel, shutdown) is no result: stored, it would stand for the point
+  // in a resumed attempt, which computes only the points not stored.
+  if (c.corrector.termination == nlp::Termination::user_stop) return false;
   const int curve = c.curve_id + offset_;
   if (!counts_.count(curve)) ctx_.add_curve(curve, "solution curve " + std::to_string(curve), family_.parameter_name);
   const int index = counts_[curve]++;

@@ -58,7 +58,8 @@ class CurveStore {
   CurveStore(service::JobContext& ctx, const continuation::ParametricProblem& family, int offset, bool grid_points_required)
       : ctx_(ctx), family_(family), offset_(offset), grid_points_required_(grid_points_required) {}
 
-  // For continuation::PointCallback: false once the job should stop.
+  // For continuation::PointCallback: stores the point and returns false once the job should stop;
+  // a point whose solve the job stopped is not stored.
   bool operator()(const continuation::CurvePoint& c);
   // A point of the family, as the store would hold it at `key`.
   WalkerPoint point(const continuation::CurvePoint& c, storage::PointKey key) const { return walker_point(family_, c, key); }
