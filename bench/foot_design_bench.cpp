@@ -140,11 +140,6 @@ int main(int argc, char** argv) {
   o.sweep.starts = argc > 4 ? std::atoi(argv[4]) : 4;
   if (argc > 5) o.sweep.dominance_starts = std::atoi(argv[5]);
   o.design_speed = o.sweep.speeds.back();
-  o.on_step = [](const std::string& step) {
-    std::printf("-- %s\n", step.c_str());
-    std::fflush(stdout);
-    return true;
-  };
   walker::GaitProblemOptions problem{walker::Objective::mechanical, o.design_speed, walker::Quadrature::trapezoid, {}};
   if (argc > 6) problem.positive_power_band = std::atof(argv[6]);
   std::printf("foot_design_bench on %s\n", bench::machine_line().c_str());
@@ -153,36 +148,50 @@ int main(int argc, char** argv) {
               o.design_speed, o.starts, o.sweep.speeds.size(), o.sweep.starts,
               o.sweep.dominance_starts > 0 ? o.sweep.dominance_starts : o.sweep.starts, problem.positive_power_band);
   // Each result is printed as soon as it is known, so a long list leaves every finished density.
-  const std::size_t n = o.sweep.speeds.size();
-  studies::FootSweepSummary start_foot, point_feet;
-  std::optional<walker::WalkerModel<double>> start_model;
-  const auto started = std::chrono::steady_clock::now();
-  o.on_reference = [&](const std::string& part, const walker::WalkerModel<double>& model, const studies::FootSweepSummary& s) {
-    const bool point = part == studies::reference_part(studies::DesignReference::point_feet);
-    (point ? point_feet : start_foot) = s;
-    if (!point) {
-      start_model = model;
-    } else {  // the second and last reference
-      std::printf("references (%.1f s):\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-      print_sweep(start_foot, *start_model);
-      print_sweep(point_feet, model);
+  // Prints the steps, the references and each density's result as they end.
+  class Printer final : public studies::FootDesignObserver {
+   public:
+    Printer(const studies::FootDesignOptions& o, std::chrono::steady_clock::time_point started)
+        : o_(o), started_(started) {}
+    bool on_step(const std::string& step) override {
+      std::printf("-- %s\n", step.c_str());
       std::fflush(stdout);
+      return true;
     }
-    return true;
-  };
-  o.on_density = [&](const studies::DensityDesign& so_far, studies::DesignPhase finished) {
-    if (finished == studies::DesignPhase::low_sweep || (finished == studies::DesignPhase::multistart && so_far.best < 0)) {
-      studies::DensityDesign d = so_far;
-      studies::add_savings(d, o.sweep.speeds, start_foot, point_feet);
-      print_density(d, o.starts, n, o.constants);
-      std::fflush(stdout);
+    bool on_reference(const std::string& part, const walker::WalkerModel<double>& model,
+                      const studies::FootSweepSummary& s) override {
+      const bool point = part == studies::reference_part(studies::DesignReference::point_feet);
+      (point ? point_feet_ : start_foot_) = s;
+      if (!point) {
+        start_model_ = model;
+      } else {  // the second and last reference
+        std::printf("references (%.1f s):\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count());
+        print_sweep(start_foot_, *start_model_);
+        print_sweep(point_feet_, model);
+        std::fflush(stdout);
+      }
+      return true;
     }
-    return true;
-  };
+    bool on_density(const studies::DensityDesign& so_far, studies::DesignPhase finished) override {
+      if (finished == studies::DesignPhase::low_sweep || (finished == studies::DesignPhase::multistart && so_far.best < 0)) {
+        studies::DensityDesign d = so_far;
+        studies::add_savings(d, o_.sweep.speeds, start_foot_, point_feet_);
+        print_density(d, o_.starts, o_.sweep.speeds.size(), o_.constants);
+        std::fflush(stdout);
+      }
+      return true;
+    }
+
+   private:
+    const studies::FootDesignOptions& o_;
+    const std::chrono::steady_clock::time_point started_;
+    studies::FootSweepSummary start_foot_, point_feet_;
+    std::optional<walker::WalkerModel<double>> start_model_;
+  } printer(o, std::chrono::steady_clock::now());
   const foot::FootSpec start = foot::foot_preset("P2-shoes-left-HMT").spec;
   studies::FootDesignResult r;
   try {
-    r = studies::design_feet(start, problem, o);
+    r = studies::design_feet(start, problem, o, printer);
   } catch (const std::invalid_argument& e) {  // options the study refuses, named by their field
     std::fprintf(stderr, "foot_design_bench: %s\n", e.what());
     return 2;

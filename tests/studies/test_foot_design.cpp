@@ -25,7 +25,8 @@ namespace {
 
 std::string refusal(const foot::FootSpec& start, const FootDesignOptions& o) {
   try {
-    design_feet(start, {}, o);
+    FootDesignObserver none;
+    design_feet(start, {}, o, none);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -229,25 +230,38 @@ struct MemoryJournals {
   }
 };
 
-// Every callback of `o` through `watch`; on_density also records the phases.
-void watch_callbacks(FootDesignOptions& o, CallbackWatch& watch, MemoryJournals& journals, std::vector<DesignPhase>& phases,
-                     std::function<bool(DesignPhase)> go_on = [](DesignPhase) { return true; }) {
-  o.on_step = [&watch](const std::string&) {
-    const CallbackWatch::Call call(watch);
+// Every call of the study's observer through `watch`; on_density also records the phases.
+class WatchingObserver final : public FootDesignObserver {
+ public:
+  WatchingObserver(CallbackWatch& watch, MemoryJournals& journals, std::vector<DesignPhase>& phases,
+                   std::function<bool(DesignPhase)> go_on = [](DesignPhase) { return true; })
+      : watch_(watch), journals_(journals), phases_(phases), go_on_(std::move(go_on)) {}
+  bool on_step(const std::string&) override {
+    const CallbackWatch::Call call(watch_);
     return true;
-  };
-  o.on_density = [&watch, &phases, go_on](const DensityDesign&, DesignPhase phase) {
-    const CallbackWatch::Call call(watch);
-    phases.push_back(phase);
-    return go_on(phase);
-  };
-  o.on_multistart_progress = [&watch](double, int, double) { const CallbackWatch::Call call(watch); };
-  o.sweep.on_progress = [&watch](const SweepProgress&) { const CallbackWatch::Call call(watch); };
+  }
+  bool on_density(const DensityDesign&, DesignPhase phase) override {
+    const CallbackWatch::Call call(watch_);
+    phases_.push_back(phase);
+    return go_on_(phase);
+  }
+  void on_multistart_progress(double, int, double) override { const CallbackWatch::Call call(watch_); }
+  void on_sweep_progress(const SweepProgress&) override { const CallbackWatch::Call call(watch_); }
+  SweepJournal journal(const std::string& part) override { return journals_.make(part, watch_); }
+
+ private:
+  CallbackWatch& watch_;
+  MemoryJournals& journals_;
+  std::vector<DesignPhase>& phases_;
+  const std::function<bool(DesignPhase)> go_on_;
+};
+
+// The corrector's on_iteration of `o` through `watch` too.
+void watch_corrector(FootDesignOptions& o, CallbackWatch& watch) {
   o.sweep.continuation.corrector.on_iteration = [&watch](const nlp::IterationReport&) {
     const CallbackWatch::Call call(watch);
     return true;
   };
-  o.journal = [&journals, &watch](const std::string& part) { return journals.make(part, watch); };
 }
 
 }  // namespace
@@ -260,8 +274,9 @@ TEST(FootDesign, ItsTwoThreadsCallTheCallerOneAtATimeAndNeverAfterItReturned) {
   CallbackWatch watch;
   MemoryJournals journals;
   std::vector<DesignPhase> phases;
-  watch_callbacks(o, watch, journals, phases);
-  const DensityDesign d = design_density(10, p2(), {}, o);
+  watch_corrector(o, watch);
+  WatchingObserver observer(watch, journals, phases);
+  const DensityDesign d = design_density(10, p2(), {}, o, observer);
   watch.closed = true;
   ASSERT_GE(d.best, 0) << "the small study found no admissible design";
   for (const DesignOptimum& m : d.optima)  // designs are KKT points, not "acceptable" potential ones
@@ -288,9 +303,10 @@ TEST(FootDesign, ItsTwoThreadsCallTheCallerOneAtATimeAndNeverAfterItReturned) {
   phases.clear();
   FootDesignOptions stop = runnable();
   stop.sweep.starts = 80;  // a design sweep of ~20 s (2 cores), unless abandoned
-  watch_callbacks(stop, stopped_watch, journals, phases, [](DesignPhase p) { return p != DesignPhase::free_foot; });
+  watch_corrector(stop, stopped_watch);
+  WatchingObserver stopping(stopped_watch, journals, phases, [](DesignPhase p) { return p != DesignPhase::free_foot; });
   const auto t0 = std::chrono::steady_clock::now();
-  const DensityDesign s = design_density(10, p2(), {}, stop);
+  const DensityDesign s = design_density(10, p2(), {}, stop, stopping);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   stopped_watch.closed = true;
   EXPECT_TRUE(s.stopped);
@@ -311,8 +327,9 @@ TEST(FootDesign, SweepsTheDesignOnceWhereTheFreeFootCurveReachesNoLowerSpeed) {
   CallbackWatch watch;
   MemoryJournals journals;
   std::vector<DesignPhase> phases;
-  watch_callbacks(o, watch, journals, phases);
-  const DensityDesign d = design_density(10, p2(), {}, o);
+  watch_corrector(o, watch);
+  WatchingObserver observer(watch, journals, phases);
+  const DensityDesign d = design_density(10, p2(), {}, o, observer);
   ASSERT_GE(d.best, 0) << "the small study found no admissible design";
   EXPECT_DOUBLE_EQ(d.low_speed, 2.2);
   EXPECT_GT(d.high.speeds_found, 0);

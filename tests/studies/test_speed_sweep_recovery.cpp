@@ -37,9 +37,12 @@ SpeedSweepOptions stopping_early_case() {
 TEST(SpeedSweepRecovery, ReachesTheSpeedsWherePlainContinuationStopped) {
   const walker::WalkerModel<double> model = walker::make_walker_model(foot::foot_preset("point").spec);
   SpeedSweepOptions o = stopping_early_case();
-  std::vector<SweepProgress> reports;  // on_progress is called one at a time
-  o.on_progress = [&](const SweepProgress& p) { reports.push_back(p); };
-  const SpeedSweepResult r = speed_sweep(model, kProblem, o);
+  struct Reports final : SpeedSweepObserver {
+    std::vector<SweepProgress> all;  // on_progress is called one at a time
+    void on_progress(const SweepProgress& p) override { all.push_back(p); }
+  } observer;
+  const std::vector<SweepProgress>& reports = observer.all;
+  const SpeedSweepResult r = speed_sweep(model, kProblem, o, observer);
   for (const ContinuationResult& run : r.runs)
     std::printf("run %.3f -> %.3f (curve %d): %s\n", run.points.front().parameter, run.points.back().parameter,
                 run.points.front().curve_id, run.message.c_str());

@@ -43,14 +43,23 @@ Sweep sweep(nlp::SpareCoreRule rule, int stop_after = std::numeric_limits<int>::
   o.seed_speeds = {0.7};
   o.starts = 2;
   Sweep s;
-  o.on_progress = [&s](const SweepProgress& p) {
-    s.both_ways = s.both_ways || p.detail.find("upwards and downwards") != std::string::npos;
-  };
+  class Observer final : public SpeedSweepObserver {
+   public:
+    Observer(Sweep& s, int stop_after) : s_(s), stop_after_(stop_after) {}
+    bool on_point(const CurvePoint& p) override {
+      s_.reported.push_back({p.parameter, p.curve_id, p.objective, p.x});
+      return static_cast<int>(s_.reported.size()) < stop_after_;
+    }
+    void on_progress(const SweepProgress& p) override {
+      s_.both_ways = s_.both_ways || p.detail.find("upwards and downwards") != std::string::npos;
+    }
+
+   private:
+    Sweep& s_;
+    const int stop_after_;
+  } observer(s, stop_after);
   nlp::set_spare_core_rule(rule);
-  s.result = speed_sweep(model, problem, o, [&](const CurvePoint& p) {
-    s.reported.push_back({p.parameter, p.curve_id, p.objective, p.x});
-    return static_cast<int>(s.reported.size()) < stop_after;
-  });
+  s.result = speed_sweep(model, problem, o, observer);
   nlp::set_spare_core_rule(nlp::SpareCoreRule::measured);
   return s;
 }

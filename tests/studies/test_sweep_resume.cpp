@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <string>
@@ -20,13 +21,16 @@ using namespace cyclopt::studies;
 
 namespace {
 
-// The JobContext side of the journal, in memory.
-struct MemoryJournal {
+// The JobContext side of the journal, in memory, as the sweep's observer; the sweep stops after
+// stop_after points.
+struct MemoryJournal final : SpeedSweepObserver {
   std::map<std::string, std::string> texts;
   std::mutex mutex;
   int recorded = 0;
+  int stop_after = std::numeric_limits<int>::max();
 
-  SweepJournal journal() {
+  bool on_point(const continuation::CurvePoint&) override { return --stop_after > 0; }
+  SweepJournal journal() override {
     SweepJournal j;
     j.find_solve = [this](int b, int s) -> std::optional<nlp::SolverSummary> {
       const std::lock_guard lock(mutex);
@@ -102,17 +106,16 @@ TEST(SweepResume, AnInterruptedSweepSolvesOnlyWhatItHadNotFinished) {
   // Attempt 1: stopped after three quarters of the points (a crash leaves the same journal: what was
   // recorded before it).
   MemoryJournal memory;
-  SpeedSweepOptions o = c.options;
-  o.journal = memory.journal();
-  int reported = 0;
-  const SpeedSweepResult first =
-      speed_sweep(c.model, c.problem, o, [&](const continuation::CurvePoint&) { return ++reported < 3 * total_points / 4; });
+  const SpeedSweepOptions& o = c.options;
+  memory.stop_after = 3 * total_points / 4;
+  const SpeedSweepResult first = speed_sweep(c.model, c.problem, o, memory);
   ASSERT_GT(memory.recorded, 0);
   EXPECT_EQ(first.resumed_solves + first.resumed_runs, 0);
 
   // Attempt 2 resumes: the finished solves and runs are taken over, the selection is the
   // uninterrupted one, bit for bit.
-  const SpeedSweepResult second = speed_sweep(c.model, c.problem, o);
+  memory.stop_after = std::numeric_limits<int>::max();
+  const SpeedSweepResult second = speed_sweep(c.model, c.problem, o, memory);
   std::printf("uninterrupted: %d solves, %d runs; attempt 1: %d solves, %d runs; attempt 2: %d solves + %d resumed, "
               "%d runs + %d resumed\n",
               whole.multistart_solves, whole.computed_runs, first.multistart_solves, first.computed_runs,
@@ -125,7 +128,7 @@ TEST(SweepResume, AnInterruptedSweepSolvesOnlyWhatItHadNotFinished) {
   expect_same_best(whole, second);
 
   // Attempt 3 finds everything recorded: nothing is solved again.
-  const SpeedSweepResult third = speed_sweep(c.model, c.problem, o);
+  const SpeedSweepResult third = speed_sweep(c.model, c.problem, o, memory);
   EXPECT_EQ(third.multistart_solves, 0);
   EXPECT_EQ(third.computed_runs, 0);
   expect_same_best(whole, third);
@@ -167,17 +170,16 @@ TEST(SweepResume, AnInterruptedRunGoesOnFromItsLastConvergedPoint) {
   for (const bool states : {false, true}) {
     MemoryJournal memory;
     memory.with_run_states = states;
-    SpeedSweepOptions o = c.options;
-    o.journal = memory.journal();
-    int reported = 0;
     // Stopped at the middle point: inside a run (the seed multistart's points come first).
-    speed_sweep(c.model, c.problem, o, [&](const continuation::CurvePoint&) { return ++reported < total_points / 2; });
-    SpeedSweepOptions counted = o;
+    memory.stop_after = total_points / 2;
+    speed_sweep(c.model, c.problem, c.options, memory);
+    memory.stop_after = std::numeric_limits<int>::max();
+    SpeedSweepOptions counted = c.options;
     counted.continuation.corrector.on_iteration = [&](const nlp::IterationReport&) {
       ++iterations[states];
       return true;
     };
-    const SpeedSweepResult resumed = speed_sweep(c.model, c.problem, counted);
+    const SpeedSweepResult resumed = speed_sweep(c.model, c.problem, counted, memory);
     if (states) {
       EXPECT_GT(memory.states_found, 0);
     }

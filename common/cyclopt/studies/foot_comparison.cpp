@@ -148,15 +148,33 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
 
 FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
                             const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
-                            const PointCallback& on_point) {
-  bool stopped = false;
-  const SpeedSweepResult sweep = speed_sweep(model, problem, options, [&](const CurvePoint& c) {
-    if (on_point && !on_point(c)) stopped = true;
-    return !stopped;
-  });
+                            SpeedSweepObserver& observer) {
+  // The caller's observer, noting whether it stopped the sweep.
+  class Stoppable final : public SpeedSweepObserver {
+   public:
+    explicit Stoppable(SpeedSweepObserver& caller) : caller_(caller) {}
+    bool on_point(const CurvePoint& c) override {
+      if (!stopped && !caller_.on_point(c)) stopped = true;
+      return !stopped;
+    }
+    void on_progress(const SweepProgress& p) override { caller_.on_progress(p); }
+    SweepJournal journal() override { return caller_.journal(); }
+    bool stopped = false;
+
+   private:
+    SpeedSweepObserver& caller_;
+  } stoppable(observer);
+  const SpeedSweepResult sweep = speed_sweep(model, problem, options, stoppable);
   FootSweepSummary s = summarise_sweep(name, model, problem, sweep);
-  s.stopped = stopped;
+  s.stopped = stoppable.stopped;
   return s;
+}
+
+FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
+                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
+                            const PointCallback& on_point) {
+  PointObserver points(on_point);
+  return sweep_foot(name, model, problem, options, points);
 }
 
 }  // namespace cyclopt::studies

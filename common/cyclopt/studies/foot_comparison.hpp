@@ -75,8 +75,12 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
 FootSweepSummary summarise_sweep(const std::string& name, const walker::WalkerModel<double>& model,
                                  const walker::GaitProblemOptions& problem, const SpeedSweepResult& sweep);
 
-// One foot's sweep, reduced: speed_sweep then summarise_sweep. on_point as speed_sweep's; when it
-// returns false the sweep stops and the summary says `stopped` (it holds what was found).
+// One foot's sweep, reduced: speed_sweep then summarise_sweep. The observer as speed_sweep's; when
+// its on_point returns false the sweep stops and the summary says `stopped` (it holds what was found).
+FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
+                            const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
+                            SpeedSweepObserver& observer);
+// The same with a PointObserver of on_point.
 FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
                             const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
                             const PointCallback& on_point = {});

@@ -62,14 +62,30 @@ std::string speed_text(double v) {
   return buf;
 }
 
-// The study's sweep options with the journal of `part`; known: gaits of the swept foot solved
-// already (the design's, seeding its fixed-foot sweep), if any.
-SpeedSweepOptions journaled(const FootDesignOptions& o, const std::string& part, std::vector<KnownGait> known = {}) {
+// The study's sweep options; known: gaits of the swept foot solved already (the design's, seeding
+// its fixed-foot sweep), if any.
+SpeedSweepOptions sweep_options(const FootDesignOptions& o, std::vector<KnownGait> known = {}) {
   SpeedSweepOptions so = o.sweep;
-  if (o.journal) so.journal = o.journal(part);
   so.known_gaits = std::move(known);
   return so;
 }
+
+// What a fixed-foot sweep of the study shows the study's observer: its progress (unless `quiet`)
+// and the journal of its part.
+class PartObserver final : public SpeedSweepObserver {
+ public:
+  PartObserver(FootDesignObserver& study, std::string part, bool quiet = false)
+      : study_(study), part_(std::move(part)), quiet_(quiet) {}
+  void on_progress(const SweepProgress& p) override {
+    if (!quiet_) study_.on_sweep_progress(p);
+  }
+  SweepJournal journal() override { return study_.journal(part_); }
+
+ private:
+  FootDesignObserver& study_;
+  const std::string part_;
+  const bool quiet_;
+};
 
 // Curvature parameters at or below this are sharp corners (the seed's designs: k_H = k_T = 1e-8,
 // Table 10.1).
@@ -168,43 +184,69 @@ std::function<R(A...)> one_at_a_time(std::function<R(A...)> f, std::mutex& m) {
   };
 }
 
-// The caller's callbacks for a study that runs on two threads (the design's fixed-foot sweep beside
+// The caller's observer for a study that runs on two threads (the design's fixed-foot sweep beside
 // step 2 and the low-speed sweep, DesignStudy::at): every call takes `m`, so the caller sees one
-// call at a time, as from one thread. The corrector's should_stop is polled from any thread already.
+// call at a time, as from one thread.
+class OneAtATime final : public FootDesignObserver {
+ public:
+  OneAtATime(FootDesignObserver& caller, std::mutex& m) : caller_(caller), m_(m) {}
+  bool on_step(const std::string& step) override {
+    const std::lock_guard lock(m_);
+    return caller_.on_step(step);
+  }
+  bool on_reference(const std::string& part, const walker::WalkerModel<double>& model, const FootSweepSummary& sweep) override {
+    const std::lock_guard lock(m_);
+    return caller_.on_reference(part, model, sweep);
+  }
+  bool on_density(const DensityDesign& so_far, DesignPhase finished) override {
+    const std::lock_guard lock(m_);
+    return caller_.on_density(so_far, finished);
+  }
+  void on_multistart_progress(double density, int runs_done, double best) override {
+    const std::lock_guard lock(m_);
+    caller_.on_multistart_progress(density, runs_done, best);
+  }
+  void on_sweep_progress(const SweepProgress& progress) override {
+    const std::lock_guard lock(m_);
+    caller_.on_sweep_progress(progress);
+  }
+  SweepJournal journal(const std::string& part) override {
+    SweepJournal j;
+    {
+      const std::lock_guard lock(m_);
+      j = caller_.journal(part);
+    }
+    j.record_solve = one_at_a_time(j.record_solve, m_);
+    j.record_run = one_at_a_time(j.record_run, m_);
+    j.record_run_state = one_at_a_time(j.record_run_state, m_);
+    return j;
+  }
+
+ private:
+  FootDesignObserver& caller_;
+  std::mutex& m_;
+};
+
+// The options with the corrector's on_iteration called under `m`, as the observer is (OneAtATime).
+// The corrector's should_stop is polled from any thread already.
 FootDesignOptions one_at_a_time(const FootDesignOptions& o, std::mutex& m) {
   FootDesignOptions s = o;
-  s.on_step = one_at_a_time(o.on_step, m);
-  s.on_density = one_at_a_time(o.on_density, m);
-  s.on_reference = one_at_a_time(o.on_reference, m);
-  s.on_multistart_progress = one_at_a_time(o.on_multistart_progress, m);
-  s.sweep.on_progress = one_at_a_time(o.sweep.on_progress, m);
   s.sweep.continuation.corrector.on_iteration = one_at_a_time(o.sweep.continuation.corrector.on_iteration, m);
-  if (o.journal)
-    s.journal = [journal = o.journal, &m](const std::string& part) {
-      SweepJournal j;
-      {
-        const std::lock_guard lock(m);
-        j = journal(part);
-      }
-      j.record_solve = one_at_a_time(j.record_solve, m);
-      j.record_run = one_at_a_time(j.record_run, m);
-      j.record_run_state = one_at_a_time(j.record_run_state, m);
-      return j;
-    };
   return s;
 }
 
 class DesignStudy {
  public:
   DesignStudy(const foot::FootSpec& start, const walker::GaitProblemOptions& problem, const FootDesignOptions& o,
-              std::vector<std::string> free)
-      : start_(start), problem_(problem), o_(one_at_a_time(o, callbacks_)), free_(std::move(free)) {}
+              FootDesignObserver& observer, std::vector<std::string> free)
+      : observer_(observer, callbacks_), start_(start), problem_(problem), o_(one_at_a_time(o, callbacks_)),
+        free_(std::move(free)) {}
 
   DensityDesign at(double rho);
 
  private:
-  bool step(const std::string& text) const { return !o_.on_step || o_.on_step(text); }
-  bool finished(const DensityDesign& d, DesignPhase phase) const { return !o_.on_density || o_.on_density(d, phase); }
+  bool step(const std::string& text) { return observer_.on_step(text); }
+  bool finished(const DensityDesign& d, DesignPhase phase) { return observer_.on_density(d, phase); }
   walker::WalkerModel<double> model_of(const foot::FootSpec& foot) const { return walker::make_walker_model(foot, o_.constants); }
   DesignOptimum optimum(const walker::GaitProblem& shape, double rho, const nlp::MultistartOptimum& m,
                         const std::vector<nlp::SolverSummary>& runs) const;
@@ -218,7 +260,8 @@ class DesignStudy {
     return po;
   }
 
-  std::mutex callbacks_;  // o_'s callbacks: one call at a time from the study's two threads
+  std::mutex callbacks_;  // the observer and o_'s callbacks: one call at a time from the study's two threads
+  OneAtATime observer_;
   const foot::FootSpec& start_;
   const walker::GaitProblemOptions& problem_;
   const FootDesignOptions o_;
@@ -294,7 +337,7 @@ DensityDesign DesignStudy::at(double rho) {
   const walker::GaitProblemOptions po = free_problem(o_.design_speed);
   d.model = model;
   d.problem = po;
-  const SweepJournal journal = o_.journal ? o_.journal(name + "/design") : SweepJournal{};
+  const SweepJournal journal = observer_.journal(name + "/design");
   const walker::GaitEvaluator ev(model);
   const Eigen::VectorXd centre = walker::gait_start(ev, o_.design_speed, {}).x;
   const walker::GaitProblem shape(model, po);
@@ -320,8 +363,7 @@ DensityDesign DesignStudy::at(double rho) {
   // rho 10 (8 starts, seed 1, foot_scale 1), P = 100 first reached 1/8 KKT points (560 s beside a
   // benchmark) where P = 200 alone reaches 3/8 (130 s idle).
   journal_multistart(mo, journal, 0);
-  if (o_.on_multistart_progress)
-    mo.on_progress = [&](int done, double best) { o_.on_multistart_progress(rho, done, best); };
+  mo.on_progress = [&](int done, double best) { observer_.on_multistart_progress(rho, done, best); };
   // The drawn starts (start i from base_seed + i, as nlp::multistart draws them), then the known designs.
   std::vector<Eigen::VectorXd> starts;
   for (int i = 0; i < o_.starts; ++i) {
@@ -365,8 +407,7 @@ DensityDesign DesignStudy::at(double rho) {
   if (!step(name + ": free-foot continuation, the design's fixed-foot sweep beside it")) return d.stopped = true, d;
   const int gait_count = shape.gait_parameter_count();
   std::atomic<bool> abandon_high{false};
-  SpeedSweepOptions high_options = journaled(o_, name + "/high", {{o_.design_speed, best.z.head(gait_count)}});
-  high_options.on_progress = nullptr;
+  SpeedSweepOptions high_options = sweep_options(o_, {{o_.design_speed, best.z.head(gait_count)}});
   high_options.continuation.corrector.should_stop = [&abandon_high, stop = high_options.continuation.corrector.should_stop] {
     return abandon_high.load() || (stop && stop());
   };
@@ -376,7 +417,8 @@ DensityDesign DesignStudy::at(double rho) {
   // instead of 603.9 s, the design's sweep 274.7 s instead of 190.7 s beside them; same results.
   std::future<FootSweepSummary> high = std::async(std::launch::async, [&, high_options] {
     nlp::lower_thread_priority();
-    return sweep_foot(name + " design", model_of(best.foot), problem_, high_options);
+    PartObserver high_observer(observer_, name + "/high", true);
+    return sweep_foot(name + " design", model_of(best.foot), problem_, high_options, high_observer);
   });
   // Whichever way this function leaves, the design's sweep has ended before its locals go.
   const struct JoinHigh {
@@ -468,8 +510,9 @@ DensityDesign DesignStudy::at(double rho) {
   const bool low_is_design = !(d.low_speed < o_.design_speed);
   if (!low_is_design) {
     if (!step(name + ": fixed-foot sweep of the low-speed design")) return d.stopped = true, d;
+    PartObserver low_observer(observer_, name + "/low");
     d.low = sweep_foot(name + " low-speed design", model_of(d.low_speed_foot), problem_,
-                       journaled(o_, name + "/low", {{d.low_speed, low_speed_gait}}));
+                       sweep_options(o_, {{d.low_speed, low_speed_gait}}), low_observer);
   }
   if (high.wait_for(std::chrono::seconds(0)) != std::future_status::ready &&
       !step(name + (low_is_design ? ": fixed-foot sweep of the design (also the low-speed design: step 2 reached no lower speed)"
@@ -559,14 +602,15 @@ walker::WalkerModel<double> reference_model(DesignReference which, const foot::F
 }
 
 FootSweepSummary sweep_reference(DesignReference which, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                                 const FootDesignOptions& o) {
+                                 const FootDesignOptions& o, FootDesignObserver& observer) {
   const std::string name = which == DesignReference::start_foot ? "start foot " + start.name : "point feet";
-  return sweep_foot(name, reference_model(which, start, o.constants), problem, journaled(o, reference_part(which)));
+  PartObserver part(observer, reference_part(which));
+  return sweep_foot(name, reference_model(which, start, o.constants), problem, sweep_options(o), part);
 }
 
 DensityDesign design_density(double rho, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                             const FootDesignOptions& o) {
-  return DesignStudy(start, problem, o, design_free_parameters(start, o)).at(rho);
+                             const FootDesignOptions& o, FootDesignObserver& observer) {
+  return DesignStudy(start, problem, o, observer, design_free_parameters(start, o)).at(rho);
 }
 
 const char* to_string(DesignAnswer a) { return a == DesignAnswer::design ? "design" : "low-speed design"; }
@@ -593,22 +637,22 @@ void add_savings(DensityDesign& d, const std::vector<double>& speeds, const Foot
 }
 
 FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                             const FootDesignOptions& o) {
+                             const FootDesignOptions& o, FootDesignObserver& observer) {
   const std::vector<std::string> free = design_free_parameters(start, o);
   const Clock::time_point t0 = Clock::now();
   FootDesignResult result;
   result.speeds = o.sweep.speeds;
   if (o.references) {
-    if (o.on_step && !o.on_step("references: start foot and point feet")) return result;
+    if (!observer.on_step("references: start foot and point feet")) return result;
     for (DesignReference which : {DesignReference::start_foot, DesignReference::point_feet}) {
       FootSweepSummary& s = which == DesignReference::start_foot ? result.start_foot : result.point_feet;
-      s = sweep_reference(which, start, problem, o);
-      if (o.on_reference && !o.on_reference(reference_part(which), reference_model(which, start, o.constants), s))
+      s = sweep_reference(which, start, problem, o, observer);
+      if (!observer.on_reference(reference_part(which), reference_model(which, start, o.constants), s))
         return result;
     }
     result.reference_seconds = seconds_since(t0);
   }
-  DesignStudy study(start, problem, o, free);
+  DesignStudy study(start, problem, o, observer, free);
   for (double rho : o.densities) {
     result.designs.push_back(study.at(rho));
     DensityDesign& d = result.designs.back();

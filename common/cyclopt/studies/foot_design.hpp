@@ -32,19 +32,14 @@
 #include "cyclopt/foot/foot_spec.hpp"
 #include "cyclopt/studies/design_class.hpp"
 #include "cyclopt/studies/foot_comparison.hpp"
+#include "cyclopt/studies/foot_design_observer.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
-#include <functional>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace cyclopt::studies {
-
-struct DensityDesign;
-
-// The phases of one density, in order (FootDesignOptions::on_density).
-enum class DesignPhase { multistart, free_foot, high_sweep, low_sweep };
 
 // A design found before at `density` (z: the design problem's variables - the gait parameters,
 // then the free foot parameters in free_parameters' order): solved as a further start of that
@@ -76,26 +71,10 @@ struct FootDesignOptions {
   bool references = true;               // sweep the start foot and point feet (else savings are NaN)
   std::vector<KnownDesign> known_designs;  // each density one of densities, z of the design problem's size
   // Grid (speeds), continuation and corrector of steps 2 and 3 and the references; its starts,
-  // seed and scale are those of the fixed-foot sweeps. Its on_progress reports each sweep.
+  // seed and scale are those of the fixed-foot sweeps. Its corrector's on_iteration is called one
+  // call at a time, though from the study's two threads (step 3), as the observer is.
   SpeedSweepOptions sweep;
   walker::WalkingConstants constants;   // P and M of every model of the study
-  // The journal of a part of the study (names above); empty: nothing is reused or recorded.
-  std::function<SweepJournal(const std::string& part)> journal;
-  // Results as they are found, for a caller that stores them; returning false stops the study.
-  // on_reference: each reference sweep (part as for the journal, the walker swept); on_density: a
-  // density's result so far after each of its phases ends (high_sweep and low_sweep both after the
-  // later of the two sweeps). Every callback here, the sweep's on_progress and its corrector's
-  // on_iteration are called one call at a time, though from the study's two threads (step 3);
-  // the design's sweep reports no on_progress.
-  std::function<bool(const std::string& part, const walker::WalkerModel<double>& model, const FootSweepSummary& sweep)>
-      on_reference;
-  std::function<bool(const DensityDesign& so_far, DesignPhase finished)> on_density;
-  // After every run of a design multistart (nlp::MultistartOptions::on_progress: runs taken so far
-  // of `starts`, best objective), from its worker threads, one call at a time.
-  std::function<void(double density, int runs_done, double best)> on_multistart_progress;
-  // Called when a step begins: "references", "rho 10: design multistart", ... Returning false
-  // stops the study (the result holds what was done).
-  std::function<bool(const std::string& step)> on_step;
 };
 
 // One distinct optimum of a design multistart.
@@ -171,8 +150,10 @@ struct FootDesignResult {
 // Throws std::invalid_argument naming the option for invalid options (a density <= 0, a design
 // speed not on the grid, a free parameter the model does not have, bounds that exclude the start
 // foot in a parameter that is not free).
+// The observer (foot_design_observer.hpp) sees the steps, the results as they are found and the
+// progress, gives the journals of an earlier attempt, and may stop the study.
 FootDesignResult design_feet(const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                             const FootDesignOptions& options);
+                             const FootDesignOptions& options, FootDesignObserver& observer);
 
 // design_feet's independent pieces, for a caller that runs them apart (foot_design_kind.hpp: one
 // work unit each). They throw as design_feet does.
@@ -182,10 +163,10 @@ const char* reference_part(DesignReference which);  // its journal's name (above
 walker::WalkerModel<double> reference_model(DesignReference which, const foot::FootSpec& start,
                                             const walker::WalkingConstants& constants);
 FootSweepSummary sweep_reference(DesignReference which, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                                 const FootDesignOptions& options);
+                                 const FootDesignOptions& options, FootDesignObserver& observer);
 // Steps 1-3 for one density (of options.densities or not); the savings are left NaN.
 DensityDesign design_density(double rho, const foot::FootSpec& start, const walker::GaitProblemOptions& problem,
-                             const FootDesignOptions& options);
+                             const FootDesignOptions& options, FootDesignObserver& observer);
 // The foot parameters a design frees by default: all of the model's but the corner curvatures
 // (HM: k_H, k_M; HMT: k_H, k_T), which stay at the start foot's values, as the seed holds them at
 // 1e-8 in its fits (4.13, 4.18) and in all its designs (Tables 10.1, 10.2). Freed, f depends on

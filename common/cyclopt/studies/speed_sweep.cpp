@@ -70,9 +70,9 @@ class Sweep {
  public:
   // One search with base seed `seed`; its curve ids begin at first_curve.
   Sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem, const SpeedSweepOptions& o,
-        const PointCallback& on_point, std::uint64_t seed, int first_curve)
-      : model_(model), problem_(problem), o_(o), on_point_(on_point), family_(walker_family(model, problem, "speed")),
-        seed_(seed), first_curve_(first_curve) {
+        SpeedSweepObserver& observer, std::uint64_t seed, int first_curve)
+      : model_(model), problem_(problem), o_(o), observer_(observer), journal_(observer.journal()),
+        family_(walker_family(model, problem, "speed")), seed_(seed), first_curve_(first_curve) {
     r_.curves = first_curve;
     r_.origins.resize(static_cast<std::size_t>(first_curve));
   }
@@ -121,7 +121,7 @@ class Sweep {
   std::vector<double> task_grid(const Task& t) const;  // the task's start speed, then the grid its way
   bool both_ways(const Task& up, const Task& down) const;
   std::optional<ContinuationResult> recorded_run(int number) const;
-  // The run of t over grid (task_grid); its points go to on_point_ as they come, or (deferred) only
+  // The run of t over grid (task_grid); its points go to the observer as they come, or (deferred) only
   // their indices are collected.
   RunOutcome compute_run(const Task& t, const std::vector<double>& grid, int number, int next_curve,
                          std::optional<ContinuationResult> recorded, std::vector<std::size_t>* deferred);
@@ -141,7 +141,7 @@ class Sweep {
   void select_best();
   void begin_phase(SweepPhase phase, std::string detail, int total);
   int label(int curve_id) const { return curve_id + o_.curve_label_offset; }  // as texts name it
-  void report();  // o_.on_progress of the current state; callers hold progress_mutex_
+  void report();  // observer_.on_progress of the current state; callers hold progress_mutex_
   double eta_seconds() const;
   // A converged point: marks its grid speed reached; `step`: it is the running run's next point.
   void reached(const CurvePoint& p, bool step);
@@ -149,7 +149,8 @@ class Sweep {
   const walker::WalkerModel<double>& model_;
   const walker::GaitProblemOptions& problem_;
   const SpeedSweepOptions& o_;
-  const PointCallback& on_point_;
+  SpeedSweepObserver& observer_;
+  const SweepJournal journal_;
   const ParametricProblem family_;
   const std::uint64_t seed_;
   const int first_curve_;
@@ -234,9 +235,8 @@ double Sweep::eta_seconds() const {
 }
 
 void Sweep::report() {
-  if (!o_.on_progress) return;
   progress_.eta_seconds = eta_seconds();
-  o_.on_progress(progress_);
+  observer_.on_progress(progress_);
 }
 
 nlp::MultistartResult Sweep::solve_from(double v, std::vector<Eigen::VectorXd> starts, bool coarse_first) {
@@ -269,7 +269,7 @@ nlp::MultistartResult Sweep::solve_batch(const walker::WalkerModel<double>& mode
   mo.solver.sqp.max_qp_iterations = kQpIterations;
   const int batch = batches_++;
   std::atomic<int> resumed{0};
-  journal_multistart(mo, o_.journal, batch, &resumed);
+  journal_multistart(mo, journal_, batch, &resumed);
   const int n = static_cast<int>(starts.size());
   {
     const std::lock_guard lock(progress_mutex_);
@@ -426,7 +426,7 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& g
     repeated = false;
     const std::size_t index = emitted++;
     if (!skip && deferred) deferred->push_back(index);
-    if (!skip && !deferred && on_point_ && !on_point_(p)) {
+    if (!skip && !deferred && !observer_.on_point(p)) {
       stopped_ = true;
       return false;
     }
@@ -459,10 +459,10 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& g
   ContinuationOptions continuation = o_.continuation;
   continuation.corrector.max_iterations = std::min(continuation.corrector.max_iterations, o_.corrector_max_iterations);
   continuation::StateCallback record_state;
-  if (o_.journal.record_run_state)
-    record_state = [this, number](const continuation::RunState& s) { o_.journal.record_run_state(number, s); };
+  if (journal_.record_run_state)
+    record_state = [this, number](const continuation::RunState& s) { journal_.record_run_state(number, s); };
   o.computed = true;
-  std::optional<continuation::RunState> state = o_.journal.find_run_state ? o_.journal.find_run_state(number) : std::nullopt;
+  std::optional<continuation::RunState> state = journal_.find_run_state ? journal_.find_run_state(number) : std::nullopt;
   if (state && !state->result.points.empty() && state->result.points.back().converged) {
     // An earlier attempt got this far: its points go through the callback as a recorded run's do,
     // and the run goes on from its last converged point. A state recorded while the ids of the
@@ -507,12 +507,12 @@ void Sweep::take_run(const Task& t, RunOutcome o, std::deque<Task>& queue) {
     run.message = "stopped at " + std::to_string(*o.superseded) + " m/s: another curve is as good from there on";
   else if (run.message == "stopped")  // the corrector's iteration callback asked to stop
     stopped_ = true;
-  if (o.computed && !stopped_ && o_.journal.record_run) o_.journal.record_run(o.number, run);
+  if (o.computed && !stopped_ && journal_.record_run) journal_.record_run(o.number, run);
   r_.runs.push_back(std::move(run));
 }
 
 std::optional<ContinuationResult> Sweep::recorded_run(int number) const {
-  return o_.journal.find_run ? o_.journal.find_run(number) : std::nullopt;
+  return journal_.find_run ? journal_.find_run(number) : std::nullopt;
 }
 
 // Continues one task; queues the backward continuation of every new curve it jumps to.
@@ -546,7 +546,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   const int first = runs_begun_;
   const std::vector<double> up_grid = task_grid(up), down_grid = task_grid(down);
   std::optional<ContinuationResult> recorded_up = recorded_run(first), recorded_down = recorded_run(first + 1);
-  const bool begun = o_.journal.find_run_state && (o_.journal.find_run_state(first) || o_.journal.find_run_state(first + 1));
+  const bool begun = journal_.find_run_state && (journal_.find_run_state(first) || journal_.find_run_state(first + 1));
   if (recorded_up || recorded_down || begun) {
     run_task(up, up_grid, std::move(recorded_up), queue);
     if (!stopped_) run_task(down, down_grid, std::move(recorded_down), queue);
@@ -579,7 +579,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   take_run(up, std::move(upward), queue);
   if (stopped_) return;
   for (std::size_t index : deferred)
-    if (on_point_ && !on_point_(downward.run.points[index])) {  // the job stops: the run ends at this point
+    if (!observer_.on_point(downward.run.points[index])) {  // the job stops: the run ends at this point
       stopped_ = true;
       downward.run.points.resize(index + 1);
       downward.run.message = "stopped";
@@ -934,26 +934,42 @@ SweepJournal search_journal(const SweepJournal& j, int k) {
   return s;
 }
 
+// What search k of several shows its caller: the points until the caller stops (then every later
+// search is stopped too), the progress with the search named, the caller's journal under the
+// search's own keys.
+class SearchObserver final : public SpeedSweepObserver {
+ public:
+  SearchObserver(SpeedSweepObserver& caller, const SweepJournal& journal, int k, int searches, bool& stopped)
+      : caller_(caller), journal_(search_journal(journal, k)),
+        label_("seed " + std::to_string(k + 1) + " of " + std::to_string(searches) + ": "), stopped_(stopped) {}
+  bool on_point(const CurvePoint& p) override {
+    if (!stopped_ && !caller_.on_point(p)) stopped_ = true;
+    return !stopped_;
+  }
+  void on_progress(const SweepProgress& p) override {
+    SweepProgress q = p;
+    q.detail = label_ + p.detail;
+    caller_.on_progress(q);
+  }
+  SweepJournal journal() override { return journal_; }
+  const std::string& label() const { return label_; }
+
+ private:
+  SpeedSweepObserver& caller_;
+  const SweepJournal journal_;
+  const std::string label_;
+  bool& stopped_;
+};
+
 SpeedSweepResult several_searches(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
-                                  const SpeedSweepOptions& options, const PointCallback& on_point) {
+                                  const SpeedSweepOptions& options, SpeedSweepObserver& observer) {
   SpeedSweepResult all;
   bool stopped = false;
-  const PointCallback forward = [&](const CurvePoint& p) {
-    if (on_point && !on_point(p)) stopped = true;
-    return !stopped;
-  };
+  const SweepJournal journal = observer.journal();
   all.closure.closed = true;
   for (std::size_t k = 0; k < options.seeds.size() && !stopped; ++k) {
-    SpeedSweepOptions o = options;
-    o.journal = search_journal(options.journal, static_cast<int>(k));
-    const std::string search = "seed " + std::to_string(k + 1) + " of " + std::to_string(options.seeds.size()) + ": ";
-    if (options.on_progress)
-      o.on_progress = [&](const SweepProgress& p) {
-        SweepProgress q = p;
-        q.detail = search + p.detail;
-        options.on_progress(q);
-      };
-    SpeedSweepResult r = Sweep(model, problem, o, forward, options.seeds[k], all.curves).run();
+    SearchObserver search(observer, journal, static_cast<int>(k), static_cast<int>(options.seeds.size()), stopped);
+    SpeedSweepResult r = Sweep(model, problem, options, search, options.seeds[k], all.curves).run();
     for (ContinuationResult& run : r.runs) all.runs.push_back(std::move(run));
     for (RecoveryAttempt& a : r.recoveries) all.recoveries.push_back(std::move(a));
     all.origins.insert(all.origins.end(), r.origins.begin() + all.curves, r.origins.end());
@@ -971,7 +987,7 @@ SpeedSweepResult several_searches(const walker::WalkerModel<double>& model, cons
     all.closure.seconds += r.closure.seconds;
     if (!r.closure.closed && all.closure.closed) {
       all.closure.closed = false;
-      all.closure.reason = search + r.closure.reason;
+      all.closure.reason = search.label() + r.closure.reason;
     }
     all.searches.push_back(std::move(r.searches.front()));
   }
@@ -1037,7 +1053,7 @@ std::string describe(const EnvelopeClosure& closure) {
 }
 
 SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
-                             const SpeedSweepOptions& options, const PointCallback& on_point) {
+                             const SpeedSweepOptions& options, SpeedSweepObserver& observer) {
   validate(options.continuation);
   if (options.speeds.size() < 2 || !std::is_sorted(options.speeds.begin(), options.speeds.end()) ||
       std::adjacent_find(options.speeds.begin(), options.speeds.end()) != options.speeds.end())
@@ -1065,11 +1081,17 @@ SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const wal
   if (!(options.closure.min_improvement >= 0.0)) throw std::invalid_argument("closure.min_improvement: must be >= 0");
   if (!(options.closure.max_seconds >= 0.0)) throw std::invalid_argument("closure.max_seconds: must be >= 0 (0: none)");
   if (options.seeds.size() == 1) {
-    SpeedSweepResult r = Sweep(model, problem, options, on_point, options.seeds.front(), 0).run();
+    SpeedSweepResult r = Sweep(model, problem, options, observer, options.seeds.front(), 0).run();
     r.seed_spread.assign(r.best.size(), std::numeric_limits<double>::quiet_NaN());
     return r;
   }
-  return several_searches(model, problem, options, on_point);
+  return several_searches(model, problem, options, observer);
+}
+
+SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
+                             const SpeedSweepOptions& options, const PointCallback& on_point) {
+  PointObserver observer(on_point);
+  return speed_sweep(model, problem, options, observer);
 }
 
 }  // namespace cyclopt::studies

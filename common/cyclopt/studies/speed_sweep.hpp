@@ -51,8 +51,7 @@
 // a foot design's optimum, section 10.2) are solved from and continued in both directions like a
 // seed optimum; the seed multistarts follow and add what they find off those curves.
 #include "cyclopt/continuation/continuation_solver.hpp"
-#include "cyclopt/studies/sweep_journal.hpp"
-#include "cyclopt/studies/sweep_progress.hpp"
+#include "cyclopt/studies/speed_sweep_observer.hpp"
 #include "cyclopt/walker/gait_problem.hpp"
 #include <cstdint>
 #include <functional>
@@ -136,11 +135,6 @@ struct SpeedSweepOptions {
   // progress, query and plots use one numbering.
   int curve_label_offset = 0;
   std::vector<KnownGait> known_gaits;              // solved from and continued first (each speed on the grid)
-  SweepJournal journal;  // resume: finished solves and runs of an earlier attempt (sweep_journal.hpp)
-  // Called when a phase begins, after every multistart solve and at every converged grid point
-  // (sweep_progress.hpp); from the sweep's thread or, one call at a time, from multistart workers
-  // and the thread of a downward run (below).
-  std::function<void(const SweepProgress&)> on_progress;
 };
 
 // The step of the sweep that found a curve (the first point of it).
@@ -226,8 +220,11 @@ struct SpeedSweepResult {
   double seconds = 0.0;
 };
 
-// on_point gets every new point (never the repeated first point of a run that starts on a point
-// already reported); returning false stops the sweep (the result then holds what was done).
+// The observer (speed_sweep_observer.hpp) sees every new point, the progress, and gives the
+// journal of an earlier attempt; it may stop the sweep (the result then holds what was done).
+SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
+                             const SpeedSweepOptions& options, SpeedSweepObserver& observer);
+// The same with a PointObserver of on_point.
 SpeedSweepResult speed_sweep(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                              const SpeedSweepOptions& options, const PointCallback& on_point = {});
 

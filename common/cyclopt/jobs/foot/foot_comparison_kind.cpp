@@ -22,6 +22,7 @@
 #include "cyclopt/jobs/foot/foot_kinds.hpp"
 #include "cyclopt/jobs/solver_progress.hpp"
 #include "cyclopt/jobs/walker/continuation_fields.hpp"
+#include "cyclopt/jobs/walker/job_sweep_observer.hpp"
 #include "cyclopt/jobs/walker/foot_sweep_points.hpp"
 #include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
 #include "cyclopt/jobs/walker/walker_job_cost.hpp"
@@ -138,7 +139,6 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   const walker::WalkerModel<double> model = w.model();
   studies::SpeedSweepOptions o = job.sweep;
   o.continuation.corrector.should_stop = stop_predicate(ctx);
-  o.journal = sweep_journal(ctx);
   // Progress names the foot and the phase of its sweep. Points count the grid speeds of the feet
   // already swept (their best points are stored, whichever unit swept them: units may run at
   // once) and of this foot; the ETA is this foot's sweep's: the server adds the feet not begun
@@ -147,7 +147,7 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
   int swept = 0;
   PhaseProgress progress(ctx, {.curve_id = 1 + unit.index, .points_total = feet * speeds});
   o.continuation.corrector.on_iteration = progress.iterations();
-  o.on_progress = [&](const studies::SweepProgress& sp) {  // one call at a time (speed_sweep.hpp)
+  const auto report = [&](const studies::SweepProgress& sp) {  // one call at a time (speed_sweep.hpp)
     if (const auto now = std::chrono::steady_clock::now(); now - counted >= kFeetSweptRecount) {
       swept = feet_swept(ctx, feet);
       counted = now;
@@ -160,9 +160,9 @@ void run_foot(const ComparisonJob& job, const WorkUnit& unit, JobContext& ctx) {
     r.points_total = feet * speeds;
     progress.set(r);
   };
-  const studies::FootSweepSummary s = studies::sweep_foot(job.feet[k].name, model, job.walker.problem, o, [&](const studies::CurvePoint&) {
-    return ctx.stop_reason() == StopReason::none;
-  });
+  JobSweepObserver observer(
+      ctx, [&](const studies::CurvePoint&) { return ctx.stop_reason() == StopReason::none; }, report);
+  const studies::FootSweepSummary s = studies::sweep_foot(job.feet[k].name, model, job.walker.problem, o, observer);
   if (s.stopped || ctx.stop_reason() != StopReason::none) return;  // the next attempt resumes from the journal
   const studies::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   for (const ComparedSpeedPoint& p : best_points(family, s, 1 + unit.index)) ctx.store_point(p.stored());

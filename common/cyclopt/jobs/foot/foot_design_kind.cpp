@@ -246,6 +246,7 @@ class DesignUnit {
     for (const ComparedSpeedPoint& p : best_points(studies::walker_family(model, base_, "speed"), s, curve)) store(p.stored());
   }
   studies::FootDesignOptions options(PhaseProgress& progress);
+  class Observer;
   void store_multistart(int k, const studies::DensityDesign& d);
   void store_free_foot(int k, const studies::DensityDesign& d);
   records::DesignedFootRecord design_record(const studies::DensityDesign& d) const;
@@ -366,57 +367,73 @@ bool DesignUnit::on_density(int k, const studies::DensityDesign& d, studies::Des
 
 studies::FootDesignOptions DesignUnit::options(PhaseProgress& progress) {
   studies::FootDesignOptions o = job_.design;
-  o.journal = [this](const std::string& part) { return sweep_journal(ctx_, part + "/"); };
-  // Progress: the step (density and phase) as the message and the phase, with the sweep's or
-  // multistart's phase after it (so a phase change names its density).
   o.sweep.continuation.corrector.on_iteration = progress.iterations();
   o.sweep.continuation.corrector.should_stop = stop_predicate(ctx_);
-  o.on_step = [this, &progress](const std::string& s) {
-    {
-      const std::lock_guard lock(mutex_);
-      step_ = s;
-    }
-    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s, .phase = s});
-    return running();
-  };
-  o.sweep.on_progress = [this, &progress](const studies::SweepProgress& sp) {
-    ProgressReport r = sweep_progress_report(sp, step());
-    r.phase = r.message + ": " + without_curve_number(r.phase);
-    r.points_done = stored_;
-    r.points_total = total_points(job_);
-    progress.set(r);
-  };
-  o.on_multistart_progress = [this, &progress](double, int done, double best) {
-    const std::string s = step();
-    progress.set({.points_done = stored_, .points_total = total_points(job_), .message = s, .phase = s + ": design multistart",
-                  .phase_done = done, .phase_total = job_.walker.starts, .best_objective = best});
-  };
   return o;
 }
+
+// What the study shows the unit: each step and its progress - the step (density and phase) as the
+// message and the phase, with the sweep's or multistart's phase after it (so a phase change names
+// its density) -, each density's phases as they end (stored, on_density), and the unit's journals.
+class DesignUnit::Observer final : public studies::FootDesignObserver {
+ public:
+  // density: the unit's index into the job's densities (negative for a reference's unit).
+  Observer(DesignUnit& unit, PhaseProgress& progress, int density) : unit_(unit), progress_(progress), density_(density) {}
+  bool on_step(const std::string& s) override {
+    {
+      const std::lock_guard lock(unit_.mutex_);
+      unit_.step_ = s;
+    }
+    progress_.set({.points_done = unit_.stored_, .points_total = total_points(unit_.job_), .message = s, .phase = s});
+    return unit_.running();
+  }
+  bool on_density(const studies::DensityDesign& d, studies::DesignPhase phase) override {
+    return unit_.on_density(density_, d, phase);
+  }
+  void on_multistart_progress(double, int done, double best) override {
+    const std::string s = unit_.step();
+    progress_.set({.points_done = unit_.stored_, .points_total = total_points(unit_.job_), .message = s,
+                   .phase = s + ": design multistart", .phase_done = done, .phase_total = unit_.job_.walker.starts,
+                   .best_objective = best});
+  }
+  void on_sweep_progress(const studies::SweepProgress& sp) override {
+    ProgressReport r = sweep_progress_report(sp, unit_.step());
+    r.phase = r.message + ": " + without_curve_number(r.phase);
+    r.points_done = unit_.stored_;
+    r.points_total = total_points(unit_.job_);
+    progress_.set(r);
+  }
+  studies::SweepJournal journal(const std::string& part) override { return sweep_journal(unit_.ctx_, part + "/"); }
+
+ private:
+  DesignUnit& unit_;
+  PhaseProgress& progress_;
+  const int density_;
+};
 
 void DesignUnit::run(const WorkUnit& unit) {
   if (ctx_.stored_checkpoints().count(kUnitResult)) return;  // done by an earlier attempt
   stored_ = static_cast<int>(ctx_.already_stored_points().size());
   PhaseProgress progress(ctx_, {.points_done = stored_, .points_total = total_points(job_)});
-  studies::FootDesignOptions o = options(progress);
+  const studies::FootDesignOptions o = options(progress);
+  const int k = unit.index - kFirstDensityUnit;
+  Observer observer(*this, progress, k);
   try {
     if (unit.index < kFirstDensityUnit) {
       const studies::DesignReference which = kReferences[unit.index];
       const std::string part = studies::reference_part(which);
-      if (!o.on_step(part)) return;
-      const studies::FootSweepSummary s = studies::sweep_reference(which, job_.start_foot, base_, o);
+      if (!observer.on_step(part)) return;
+      const studies::FootSweepSummary s = studies::sweep_reference(which, job_.start_foot, base_, o, observer);
       if (!running()) return;
       store_sweep(which == studies::DesignReference::start_foot ? records::kStartFootCurve : records::kPointFeetCurve,
                   studies::reference_model(which, job_.start_foot, job_.walker.constants), s);
       ctx_.store_checkpoint(kUnitResult, foot_sweep_to_json(s).dump());
       return;
     }
-    const int k = unit.index - kFirstDensityUnit;
     if (k >= static_cast<int>(job_.design.densities.size()))
       throw std::logic_error("foot_design: no density " + std::to_string(k) + " in the job");
-    o.on_density = [this, k](const studies::DensityDesign& d, studies::DesignPhase phase) { return on_density(k, d, phase); };
     const studies::DensityDesign d =
-        studies::design_density(job_.design.densities[static_cast<std::size_t>(k)], job_.start_foot, base_, o);
+        studies::design_density(job_.design.densities[static_cast<std::size_t>(k)], job_.start_foot, base_, o, observer);
     if (d.stopped || !running()) return;
     ctx_.store_checkpoint(kUnitResult, nlohmann::json{{"record", nlohmann::json(design_record(d))},
                                                       {"high", foot_sweep_to_json(d.high)},

@@ -12,7 +12,7 @@
 // (sweep_checkpoints.hpp).
 #include "cyclopt/jobs/solver_progress.hpp"
 #include "cyclopt/jobs/walker/continuation_fields.hpp"
-#include "cyclopt/jobs/walker/sweep_checkpoints.hpp"
+#include "cyclopt/jobs/walker/job_sweep_observer.hpp"
 #include "cyclopt/jobs/walker/walker_job_cost.hpp"
 #include "cyclopt/jobs/walker/walker_job_json.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
@@ -61,15 +61,16 @@ void run_sweep(const SweepJob& job, JobContext& ctx) {
   studies::SpeedSweepOptions so = job.sweep;
   PhaseProgress progress(ctx, {.points_total = static_cast<int>(so.speeds.size()), .message = "speed sweep"});
   so.continuation.corrector.on_iteration = progress.iterations();
-  so.on_progress = [&](const studies::SweepProgress& p) { progress.set(sweep_progress_report(p, "speed sweep")); };
   so.continuation.corrector.should_stop = stop_predicate(ctx);
-  so.journal = sweep_journal(ctx);  // a resumed sweep reuses what an earlier attempt finished
-  so.curve_label_offset = 1;        // texts name curves by their curve_index (CurveStore below)
+  so.curve_label_offset = 1;  // texts name curves by their curve_index (CurveStore below)
   const continuation::ParametricProblem family = studies::walker_family(model, job.walker.problem, "speed");
   ctx.announce(static_cast<int>(so.speeds.size()));
   CurveStore store(ctx, family, 1, false);
-  const studies::SpeedSweepResult r =
-      studies::speed_sweep(model, job.walker.problem, so, [&](const continuation::CurvePoint& c) { return store(c); });
+  // A resumed sweep reuses what an earlier attempt finished (the job's journal).
+  JobSweepObserver observer(
+      ctx, [&](const continuation::CurvePoint& c) { return store(c); },
+      [&](const studies::SweepProgress& p) { progress.set(sweep_progress_report(p, "speed sweep")); });
+  const studies::SpeedSweepResult r = studies::speed_sweep(model, job.walker.problem, so, observer);
   if (ctx.stop_reason() != StopReason::none) return;
   ctx.add_curve(0, "best solution per speed", "speed");
   for (std::size_t i = 0; i < r.best.size(); ++i) {
