@@ -9,9 +9,13 @@
 
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -19,10 +23,25 @@ using namespace cyclopt;
 
 namespace {
 
+// A loopback port no one listens on now: the kernel's choice for port 0 (another program could take
+// it before the dashboard binds it, a far smaller window than any fixed choice).
+int unused_loopback_port() {
+  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t n = sizeof a;
+  if (s < 0 || ::bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
+      ::getsockname(s, reinterpret_cast<sockaddr*>(&a), &n) != 0)
+    throw std::runtime_error("no loopback port");
+  ::close(s);
+  return ntohs(a.sin_port);
+}
+
 struct RunningDashboard {
   explicit RunningDashboard(const std::string& db) : store(db) {
     config.database = db;
-    config.port = 20000 + static_cast<int>(getpid() % 20000);
+    config.port = unused_loopback_port();
     server.emplace(config, store, fleet, std::nullopt);
     thread = std::thread([this] { server->listen(); });
     for (int i = 0; i < 200 && !httplib::Client("127.0.0.1", config.port).Get("/static/dashboard.css"); ++i)
