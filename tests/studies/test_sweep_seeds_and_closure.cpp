@@ -77,8 +77,16 @@ SpeedSweepOptions seeds_case() {
 }
 
 TEST(SweepSeeds, EachSeedSearchesAloneAndTheEnvelopeIsTheirBest) {
+  SpeedSweepOptions alone = seeds_case();
+  alone.seeds = {7};
+  const SpeedSweepResult second = speed_sweep(point_feet(), kProblem, alone);
+  alone.seeds = {1};
+  const int first_curves = speed_sweep(point_feet(), kProblem, alone).curves;
   SpeedSweepOptions o = seeds_case();
   o.seeds = {1, 7};
+  // max_curves bounds each search (not their sum): with exactly the curves each needs alone, the
+  // second search is still the sweep of its seed alone.
+  o.max_curves = std::max(first_curves, second.curves);
   std::set<int> reported_curves;
   const SpeedSweepResult r = speed_sweep(point_feet(), kProblem, o, [&](const CurvePoint& p) {
     reported_curves.insert(p.curve_id);
@@ -95,9 +103,6 @@ TEST(SweepSeeds, EachSeedSearchesAloneAndTheEnvelopeIsTheirBest) {
 
   EXPECT_EQ(r.closure.reason, "seed 1 of 2: closure off");
   EXPECT_EQ(r.closure.solves, 0);
-  SpeedSweepOptions alone = seeds_case();
-  alone.seeds = {7};
-  const SpeedSweepResult second = speed_sweep(point_feet(), kProblem, alone);
   ASSERT_EQ(second.best.size(), r.best.size());
   for (std::size_t i = 0; i < r.best.size(); ++i) {
     const BestPoint& a = r.searches[1].best[i];

@@ -108,6 +108,9 @@ class Sweep {
   bool unreached_to_try(std::size_t i) const { return !r_.best[i].found && unreached_curves_[i] < r_.curves; }
   const CurvePoint* best_at(double v) const;
   int open_curve(const CurveOrigin& origin);
+  // This search may open another curve: it opened fewer than max_curves (each search of several
+  // seeds has its own; their ids run on, speed_sweep.hpp).
+  bool curves_left() const { return r_.curves - first_curve_ < o_.max_curves; }
   // A continuation run of a task as computed, before the sweep takes it in (take_run).
   struct RunOutcome {
     ContinuationResult run;
@@ -331,7 +334,7 @@ void Sweep::continue_runner_ups(double v, const nlp::MultistartResult& m) {
   const int count = std::min(o_.runner_ups, static_cast<int>(m.optima.size()) - 1);
   if (count < 1) return;
   const double best = m.optima.front().objective;
-  for (int k = 1; k <= count && !stopped_ && r_.curves < o_.max_curves; ++k) {
+  for (int k = 1; k <= count && !stopped_ && curves_left(); ++k) {
     const nlp::MultistartOptimum& optimum = m.optima[static_cast<std::size_t>(k)];
     if (optimum.objective - best > o_.runner_up_margin * std::max(std::abs(best), 1e-12)) break;
     if (on_known_curve(v, optimum.x, optimum.objective)) continue;  // a run from a better optimum passed it
@@ -491,7 +494,7 @@ void Sweep::take_run(const Task& t, RunOutcome o, std::deque<Task>& queue) {
   r_.curves = std::max(r_.curves, run.next_curve_id);
   for (const CurveJump& j : run.jumps) {
     r_.origins[static_cast<std::size_t>(j.to_curve)].speed = j.to_parameter;
-    if (j.to_curve >= o_.max_curves) continue;
+    if (j.to_curve - first_curve_ >= o_.max_curves) continue;
     for (const CurvePoint& p : run.points)
       if (p.curve_id == j.to_curve && p.parameter == j.to_parameter) {
         // A jump onto a curve an earlier run already followed (the same optimum at the same speed,
@@ -705,7 +708,7 @@ void Sweep::recover(const Target& target) {
     }
   }
   if (target.unreached) unreached_curves_[target.index] = r_.curves;
-  if (found && r_.curves < o_.max_curves) {
+  if (found && curves_left()) {
     a.found = true;
     a.objective = f;
     open_and_continue(*x, v, {a.step, v}, true);
@@ -790,7 +793,7 @@ bool Sweep::closure_pass(int pass) {
     const CurvePoint* current = best_at(v);
     if (current && !(current->objective - f > o_.closure.min_improvement * std::max(std::abs(current->objective), 1e-12)))
       continue;
-    if (r_.curves >= o_.max_curves) {
+    if (!curves_left()) {
       r_.closure.reason = "a better point was found but max_curves (" + std::to_string(o_.max_curves) + ") curves are in use";
       return false;
     }
@@ -876,7 +879,7 @@ SpeedSweepResult Sweep::run() {
   }
   seed_batches_left_ = static_cast<int>(seeds.size());
   for (const KnownGait& known : o_.known_gaits) {
-    if (stopped_ || r_.curves >= o_.max_curves) break;
+    if (stopped_ || !curves_left()) break;
     char detail[48];
     std::snprintf(detail, sizeof detail, "from a known gait at %.4g m/s", known.speed);
     begin_phase(SweepPhase::multistart, detail, 1);
@@ -885,7 +888,7 @@ SpeedSweepResult Sweep::run() {
                          SweepStep::known_gait);
   }
   for (const std::size_t i : seeds) {
-    if (stopped_ || r_.curves >= o_.max_curves) break;
+    if (stopped_ || !curves_left()) break;
     const double v = o_.speeds[i];
     seeded_[i] = true;
     --seed_batches_left_;

@@ -92,7 +92,8 @@ struct SpeedSweepOptions {
   // 129 s instead of 191 s, but the foot design's low-speed sweeps kept worse optima at 0.4-0.7 m/s
   // (rho 40 saving 17.6 % instead of 19.6 %, rho 60 6.7 % instead of 7.8 %), hence the default.
   int dominance_starts = 0;
-  int max_curves = 24;                              // curves continued at most (each jump or recovery opens one)
+  // Curves continued at most (each jump or recovery opens one), per search: each of `seeds` has its own.
+  int max_curves = 24;
   // Step 2b (not in the seed): up to runner_ups further distinct optima of each seed-speed
   // multistart, within runner_up_margin (relative) of its best, are continued both ways while they
   // are the best known (a run stops at the first grid speed where another curve is at least as
