@@ -149,24 +149,9 @@ FootComparisonResult summarise_feet(std::vector<double> speeds, std::vector<Foot
 FootSweepSummary sweep_foot(const std::string& name, const walker::WalkerModel<double>& model,
                             const walker::GaitProblemOptions& problem, const SpeedSweepOptions& options,
                             SpeedSweepObserver& observer) {
-  // The caller's observer, noting whether it stopped the sweep.
-  class Stoppable final : public SpeedSweepObserver {
-   public:
-    explicit Stoppable(SpeedSweepObserver& caller) : caller_(caller) {}
-    bool on_point(const CurvePoint& c) override {
-      if (!stopped && !caller_.on_point(c)) stopped = true;
-      return !stopped;
-    }
-    void on_progress(const SweepProgress& p) override { caller_.on_progress(p); }
-    SweepJournal journal() override { return caller_.journal(); }
-    bool stopped = false;
-
-   private:
-    SpeedSweepObserver& caller_;
-  } stoppable(observer);
-  const SpeedSweepResult sweep = speed_sweep(model, problem, options, stoppable);
+  const SpeedSweepResult sweep = speed_sweep(model, problem, options, observer);
   FootSweepSummary s = summarise_sweep(name, model, problem, sweep);
-  s.stopped = stoppable.stopped;
+  s.stopped = sweep.stopped;
   return s;
 }
 

@@ -145,6 +145,8 @@ class Sweep {
   void begin_phase(SweepPhase phase, std::string detail, int total);
   int label(int curve_id) const { return curve_id + o_.curve_label_offset; }  // as texts name it
   void report();  // observer_.on_progress of the current state; callers hold progress_mutex_
+  // The observer takes p; false, and the sweep stops, once it asked to stop (then it is not called again).
+  bool hand_over(const CurvePoint& p);
   double eta_seconds() const;
   // A converged point: marks its grid speed reached; `step`: it is the running run's next point.
   void reached(const CurvePoint& p, bool step);
@@ -235,6 +237,12 @@ double Sweep::eta_seconds() const {
   const double speed_rate = progress_.speeds_reached > 0 && continuation_wall_ > 0.0
                                 ? continuation_wall_ / progress_.speeds_reached : solve_rate;
   return (seed_batches_left_ * o_.starts + batch_left) * solve_rate + unreached * speed_rate + closure;
+}
+
+bool Sweep::hand_over(const CurvePoint& p) {
+  if (!r_.stopped && observer_.on_point(p)) return true;
+  r_.stopped = stopped_ = true;
+  return false;
 }
 
 void Sweep::report() {
@@ -429,10 +437,7 @@ Sweep::RunOutcome Sweep::compute_run(const Task& t, const std::vector<double>& g
     repeated = false;
     const std::size_t index = emitted++;
     if (!skip && deferred) deferred->push_back(index);
-    if (!skip && !deferred && !observer_.on_point(p)) {
-      stopped_ = true;
-      return false;
-    }
+    if (!skip && !deferred && !hand_over(p)) return false;
     if (!skip && p.converged) reached(p, !same_speed(p.parameter, t.speed));  // the start is no step
     if (skip || !p.converged || !p.on_grid) return true;
     // An earlier run followed this curve from here on already (both directions are continued
@@ -582,8 +587,7 @@ void Sweep::continue_both_ways(const Task& up, const Task& down, std::deque<Task
   take_run(up, std::move(upward), queue);
   if (stopped_) return;
   for (std::size_t index : deferred)
-    if (!observer_.on_point(downward.run.points[index])) {  // the job stops: the run ends at this point
-      stopped_ = true;
+    if (!hand_over(downward.run.points[index])) {  // the job stops: the run ends at this point
       downward.run.points.resize(index + 1);
       downward.run.message = "stopped";
       break;
@@ -937,18 +941,14 @@ SweepJournal search_journal(const SweepJournal& j, int k) {
   return s;
 }
 
-// What search k of several shows its caller: the points until the caller stops (then every later
-// search is stopped too), the progress with the search named, the caller's journal under the
-// search's own keys.
+// What search k of several shows its caller: the points, the progress with the search named, the
+// caller's journal under the search's own keys.
 class SearchObserver final : public SpeedSweepObserver {
  public:
-  SearchObserver(SpeedSweepObserver& caller, const SweepJournal& journal, int k, int searches, bool& stopped)
+  SearchObserver(SpeedSweepObserver& caller, const SweepJournal& journal, int k, int searches)
       : caller_(caller), journal_(search_journal(journal, k)),
-        label_("seed " + std::to_string(k + 1) + " of " + std::to_string(searches) + ": "), stopped_(stopped) {}
-  bool on_point(const CurvePoint& p) override {
-    if (!stopped_ && !caller_.on_point(p)) stopped_ = true;
-    return !stopped_;
-  }
+        label_("seed " + std::to_string(k + 1) + " of " + std::to_string(searches) + ": ") {}
+  bool on_point(const CurvePoint& p) override { return caller_.on_point(p); }
   void on_progress(const SweepProgress& p) override {
     SweepProgress q = p;
     q.detail = label_ + p.detail;
@@ -961,18 +961,17 @@ class SearchObserver final : public SpeedSweepObserver {
   SpeedSweepObserver& caller_;
   const SweepJournal journal_;
   const std::string label_;
-  bool& stopped_;
 };
 
 SpeedSweepResult several_searches(const walker::WalkerModel<double>& model, const walker::GaitProblemOptions& problem,
                                   const SpeedSweepOptions& options, SpeedSweepObserver& observer) {
   SpeedSweepResult all;
-  bool stopped = false;
   const SweepJournal journal = observer.journal();
   all.closure.closed = true;
-  for (std::size_t k = 0; k < options.seeds.size() && !stopped; ++k) {
-    SearchObserver search(observer, journal, static_cast<int>(k), static_cast<int>(options.seeds.size()), stopped);
+  for (std::size_t k = 0; k < options.seeds.size() && !all.stopped; ++k) {  // a stop ends the later searches too
+    SearchObserver search(observer, journal, static_cast<int>(k), static_cast<int>(options.seeds.size()));
     SpeedSweepResult r = Sweep(model, problem, options, search, options.seeds[k], all.curves).run();
+    all.stopped = r.stopped;
     for (ContinuationResult& run : r.runs) all.runs.push_back(std::move(run));
     for (RecoveryAttempt& a : r.recoveries) all.recoveries.push_back(std::move(a));
     all.origins.insert(all.origins.end(), r.origins.begin() + all.curves, r.origins.end());

@@ -208,6 +208,7 @@ struct SpeedSweepResult {
   std::vector<RecoveryAttempt> recoveries;  // in the order tried
   std::vector<CurveOrigin> origins;      // of curve id 0 .. curves - 1
   int curves = 0;                        // curve ids used: 0 .. curves - 1
+  bool stopped = false;                  // the observer's on_point asked to stop: the result holds what was done
   // The closure: of the one search, or of all (passes, solves, seconds summed; closed if every
   // search's envelope is, else the first reason).
   EnvelopeClosure closure;
