@@ -72,8 +72,8 @@ report read a results database file directly (read-only) when given --db FILE.
   submit --task sensitivity --foot FILE.json|PRESET --speed V
          [--parameters P,P,...]
          [--relative-range R] [--steps N] ...
-                     queue a job (proto/schemas/job.schema.json); --sweep builds
-                     a foot_sweep spec, --speeds a walker job of TASK (default
+                     queue a job (spec: cyclopt schema); --sweep builds a
+                     foot_sweep spec, --speeds a walker job of TASK (default
                      sweep); foot_comparison sweeps --feet (default: the 16 of
                      seed 001 section 9.2) and --reference (default point) with
                      --starts starts per seed speed; foot_fit fits HM and HMT
@@ -145,6 +145,10 @@ report read a results database file directly (read-only) when given --db FILE.
                      its step (default: the middle speed); FILE.pdf: the same as
                      a PDF (figures as vector pages, no animations) (default
                      FILE: jobJOB.html)
+  schema [FILE]      print the job spec's JSON schema, every task's rules
+                     included (for an editor or a validator of your own), or
+                     FILE: foot.schema.json or giant_swing_task.schema.json, to
+                     which it refers
 
 Output of status, list, query: aligned table (times in ISO 8601: query's UTC,
 list's and status' local), or --wide / --csv / --json (Unix seconds).
@@ -158,7 +162,7 @@ sent.
 namespace cli = cyclopt::cli;
 constexpr int kOk = cli::kExitOk, kRejected = cli::kExitRejected, kNoAnswer = cli::kExitNoAnswer;
 
-const std::vector<std::string> kCommands = {"submit", "watch", "status", "list", "top", "query", "export", "cancel", "plot", "report"};
+const std::vector<std::string> kCommands = {"submit", "watch", "status", "list", "top", "query", "export", "cancel", "plot", "report", "schema"};
 
 struct Options {
   std::string command;
@@ -676,6 +680,13 @@ int report(cyclopt::client::ResultSource& s, const Options& o) {
 }
 
 int run(const Options& o) {
+  if (o.command == "schema") {
+    const std::string file = o.positional.empty() ? "job.schema.json" : o.positional.front();
+    const nlohmann::json schema = file == "job.schema.json" ? cyclopt::service::job_schema().schema()
+                                                            : nlohmann::json::parse(cyclopt::service::job_schema_file(file));
+    std::printf("%s\n", schema.dump(2).c_str());
+    return kOk;
+  }
   cyclopt::client::ResultSource s({.database = o.db, .lcm_url = o.lcm_url, .key_file = o.key_file, .timeout = o.timeout});
   if (o.command == "submit") return submit(s, o);
   if (o.command == "watch") return watch(s, o, job_argument(o));

@@ -117,7 +117,7 @@ class Client(_Results):
         super().__init__(_results.Results("", lcm_url, key_file, timeout))
 
     def submit(self, spec: dict[str, Any], request_id: str = "") -> Job:
-        """Queues a job spec (docs/walker-jobs.md, proto/schemas/job.schema.json). A spec the server
+        """Queues a job spec (docs/walker-jobs.md; its schema: ``cyclopt schema``). A spec the server
         rejects raises :class:`cyclopt.SpecError` naming the field; no answer raises :class:`NoAnswer`."""
         ack = self._results.submit(json.dumps(spec), request_id)
         if ack is None:

@@ -215,6 +215,44 @@ TEST(JobSchema, NamesTheFieldItRefuses) {
   EXPECT_EQ(field(s), "multistart.seeds");
 }
 
+// The schema is job.schema.json with each folder's task file merged in (service/job_schema.hpp):
+// every file's rules select only its own tasks, and a task or a field defined twice, or a file
+// of another form, stops the merge naming the file.
+TEST(JobSchema, EachFolderOfKindsAddsItsOwnTasks) {
+  const std::vector<service::TaskSchemaFile>& files = service::task_schema_files();
+  ASSERT_GE(files.size(), 3u);
+  for (const service::TaskSchemaFile& file : files) {
+    const json part = json::parse(file.text);
+    const json& tasks = part.at("tasks");
+    for (const json& rule : part.at("allOf")) {
+      const json& selector = rule.at("if").at("properties").at("task");
+      for (const json& t : selector.contains("const") ? json::array({selector["const"]}) : selector.at("enum"))
+        EXPECT_NE(std::find(tasks.begin(), tasks.end(), t), tasks.end()) << file.path << " has a rule for " << t;
+    }
+  }
+  const json shared = json::parse(service::job_schema_file("job.schema.json"));
+  EXPECT_FALSE(shared.at("properties").at("task").contains("enum")) << "the tasks come from the folders' files";
+  const auto merge_error = [&](const std::vector<service::TaskSchemaFile>& parts) -> std::string {
+    try {
+      service::merged_job_schema(shared, parts);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "merged";
+  };
+  const service::TaskSchemaFile toy{"jobs/toy/toy_tasks.schema.json", R"({"tasks": ["toy"], "properties": {"toy_size": {"type": "integer"}}})"};
+  EXPECT_EQ(merge_error({toy}), "merged");
+  EXPECT_EQ(merge_error({toy, {"b.json", R"({"tasks": ["toy"]})"}}), "b.json: task \"toy\" is defined twice");
+  EXPECT_EQ(merge_error({toy, {"b.json", R"({"tasks": ["b"], "properties": {"toy_size": {}}})"}}),
+            "b.json: field \"toy_size\" is defined twice");
+  EXPECT_EQ(merge_error({{"c.json", R"({"tasks": ["c"], "properties": {"foot": {}}})"}}), "c.json: field \"foot\" is defined twice");
+  EXPECT_EQ(merge_error({{"d.json", R"({"tasks": []})"}}), "d.json: \"tasks\" must list its tasks");
+  EXPECT_NE(merge_error({{"e.json", R"({"tasks": ["e"], "rules": []})"}}).find("e.json: unknown member \"rules\""), std::string::npos);
+  const json merged = service::merged_job_schema(shared, {toy});
+  EXPECT_EQ(merged.at("properties").at("task").at("enum"), json::array({"toy"}));
+  EXPECT_TRUE(merged.at("properties").contains("toy_size"));
+}
+
 // The validator itself, on small schemas: each keyword can refuse.
 TEST(JsonSchemaValidator, EachKeywordRefuses) {
   const fs::path dir = fs::temp_directory_path() / ("contract-schema-" + std::to_string(::getpid()));

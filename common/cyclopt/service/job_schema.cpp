@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 namespace cyclopt::service {
 
@@ -26,8 +27,45 @@ std::string field_path(const std::string& pointer) {
 
 }  // namespace
 
+nlohmann::json merged_job_schema(nlohmann::json shared, const std::vector<TaskSchemaFile>& tasks) {
+  nlohmann::json& properties = shared.at("properties");
+  nlohmann::json names = nlohmann::json::array();
+  nlohmann::json rules = nlohmann::json::array();
+  for (const TaskSchemaFile& file : tasks) {
+    const auto fail = [&](const std::string& why) { throw std::runtime_error(file.path + ": " + why); };
+    nlohmann::json part;
+    try {
+      part = nlohmann::json::parse(file.text);
+    } catch (const nlohmann::json::exception& e) {
+      fail(std::string("not JSON (") + e.what() + ")");
+    }
+    for (const auto& [key, value] : part.items())
+      if (key != "$comment" && key != "tasks" && key != "properties" && key != "allOf")
+        fail("unknown member \"" + key + "\" (a task file holds $comment, tasks, properties, allOf)");
+    if (!part.contains("tasks") || !part["tasks"].is_array() || part["tasks"].empty()) fail("\"tasks\" must list its tasks");
+    for (const nlohmann::json& task : part["tasks"]) {
+      if (!task.is_string()) fail("\"tasks\" must hold names");
+      if (std::find(names.begin(), names.end(), task) != names.end()) fail("task " + task.dump() + " is defined twice");
+      names.push_back(task);
+    }
+    const nlohmann::json own = part.value("properties", nlohmann::json::object());
+    for (const auto& [field, schema] : own.items()) {
+      if (properties.contains(field)) fail("field \"" + field + "\" is defined twice");
+      properties[field] = schema;
+    }
+    const nlohmann::json task_rules = part.value("allOf", nlohmann::json::array());
+    for (const nlohmann::json& rule : task_rules) rules.push_back(rule);
+  }
+  properties.at("task")["enum"] = names;
+  shared["allOf"] = rules;
+  return shared;
+}
+
 const JsonSchemaValidator& job_schema() {
-  static const JsonSchemaValidator v(job_schema_file, "job.schema.json");
+  static const std::string merged =
+      merged_job_schema(nlohmann::json::parse(job_schema_file("job.schema.json")), task_schema_files()).dump();
+  static const JsonSchemaValidator v(
+      [](const std::string& file) { return file == "job.schema.json" ? merged : job_schema_file(file); }, "job.schema.json");
   return v;
 }
 
