@@ -26,6 +26,7 @@ async function main() {
     await page.setViewport({ width: 1800, height: 900 });
     page.on("dialog", async (d) => { dialogs.push(d.message()); await d.dismiss(); });
     page.on("pageerror", (e) => errors.push(String(e)));
+    page.on("console", (m) => { if (/Content.Security.Policy/i.test(m.text())) errors.push(m.text()); });
     await page.goto(url, { waitUntil: "domcontentloaded" });
     return page;
   };
@@ -93,6 +94,24 @@ async function main() {
     await missing.waitForFunction(() => /^refused/.test(document.getElementById("connection").textContent), { timeout: 5000 });
     check(true, "/job/999 says the stream was refused");
     await missing.close();
+
+    // Job 2 done: its report shows inline, and a gait animation runs only while on screen (the
+    // report's one script, allowed by its hash; a violation of the policy would be an error).
+    await job.bringToFront();
+    await job.waitForFunction(() => document.getElementById("job-summary").dataset.state === "done", { timeout: 60000 });
+    const frame = await (await job.waitForSelector("iframe.report", { timeout: 10000 })).contentFrame();
+    await frame.waitForFunction(() => document.querySelectorAll("figure>svg animate").length > 0, { timeout: 30000 });
+    const animations = () => frame.evaluate(() => {
+      const svgs = [...document.querySelectorAll("figure>svg")].filter((s) => s.querySelector("animate"));
+      return { all: svgs.length, paused: svgs.filter((s) => s.animationsPaused()).length, last: svgs[svgs.length - 1].animationsPaused() };
+    });
+    const before = await animations();
+    check(before.paused > 0 && before.last, `job 2's report: ${before.paused} of ${before.all} gait animations paused off screen`);
+    await job.evaluate(() => document.querySelector("iframe.report").scrollIntoView());
+    await frame.evaluate(() => [...document.querySelectorAll("figure>svg")].filter((s) => s.querySelector("animate")).pop().scrollIntoView());
+    await frame.waitForFunction(() => !document.querySelectorAll("figure>svg")[document.querySelectorAll("figure>svg").length - 1].animationsPaused(),
+                                { timeout: 5000 });
+    check(true, "the last gait animation runs once it is on screen");
 
     // Latency from a progress message's timestamp to its showing on the page.
     const latencies = (await fleet.evaluate(() => window.cycloptShownLatencyMs))

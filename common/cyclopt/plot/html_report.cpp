@@ -3,6 +3,7 @@
 #include "cyclopt/plot/rich_text.hpp"
 #include "cyclopt/plot/svg_ids.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -44,6 +45,7 @@ details summary{cursor:pointer;color:#333;margin-top:.6em}.box table{font-size:.
 .scroll{max-height:36em;overflow:auto;border:1px solid #ddd}.scroll table{margin:0}.scroll td{white-space:nowrap}
 .scroll thead th{position:sticky;top:0})";
 
+
 }  // namespace
 
 std::string svg_of(const LineChart& chart, const RenderOptions& options) { return svg_via_file(chart, options); }
@@ -84,6 +86,16 @@ std::string report_number(const nlohmann::json& v, const char* format) {
   return report_number(v.is_number() ? v.get<double>() : std::nan(""), format);
 }
 
+const std::string& report_script() {
+  static const std::string script =
+      "(function(){var svgs=[].filter.call(document.querySelectorAll(\"figure>svg\"),function(s){"
+      "return s.querySelector(\"animate\")});if(!svgs.length||!(\"IntersectionObserver\" in window))return;"
+      "var seen=new IntersectionObserver(function(entries){entries.forEach(function(e){"
+      "if(e.isIntersecting)e.target.unpauseAnimations();else e.target.pauseAnimations();});});"
+      "svgs.forEach(function(s){s.pauseAnimations();seen.observe(s);});})();";
+  return script;
+}
+
 std::string to_html(const Report& report) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(report.title)
@@ -117,6 +129,10 @@ std::string to_html(const Report& report) {
     if (s.figure_grid) h << "</div>\n";
     h << "</section>\n";
   }
+  const bool animated = std::any_of(report.sections.begin(), report.sections.end(), [](const ReportSection& s) {
+    return std::any_of(s.figures.begin(), s.figures.end(), [](const ReportFigure& f) { return f.svg.find("<animate") != std::string::npos; });
+  });
+  if (animated) h << "<script>" << report_script() << "</script>\n";
   h << "</body></html>\n";
   return h.str();
 }

@@ -67,6 +67,10 @@ std::string rich_text_html(const std::string& markup);
 std::string report_number(double v, const char* format);
 std::string report_number(const nlohmann::json& v, const char* format);
 std::string to_html(const Report& report);
+// The one script a report holds, when a figure is animated: animations run only while their
+// figure is on screen (a sweep's report loops a gait per converged speed; a browser drawing all of
+// them each frame kept a core busy). A server that forbids scripts allows this one by its hash.
+const std::string& report_script();
 // Writes to_html(report) to `path`; throws std::runtime_error if it cannot.
 void write_html(const Report& report, const std::string& path);
 
