@@ -31,6 +31,36 @@ function durationText(seconds) {
   return h > 0 ? h + ":" + two(m) + ":" + two(s % 60) : m + ":" + two(s % 60);
 }
 
+// Writes `text` only when it differs: every write costs the browser a layout and a frame.
+function setText(element, text) {
+  if (element.textContent !== text) element.textContent = text;
+}
+
+// `fn` at most every `interval` ms: a call within the interval runs once when it ends, with the
+// newest arguments (messages arrive several times a second; a person reads a line or a chart
+// about once, and each drawing costs the browser far more than receiving the message).
+function throttled(fn, interval) {
+  let last = -Infinity, pending = null;
+  const run = () => {
+    last = performance.now();
+    const args = pending;
+    pending = null;
+    fn(...args);
+  };
+  const call = (...args) => {
+    const due = last + interval - performance.now();
+    const scheduled = pending !== null;
+    pending = args;
+    if (due <= 0 && !scheduled) run();
+    else if (!scheduled) setTimeout(run, due);
+  };
+  return call;
+}
+
+// Text that changes with each message (the fleet's rows, a job's progress line): at most every
+// kLineInterval ms, so a message reaches the page within it (docs/dashboard.md).
+const kLineInterval = 500;
+
 function numberText(v) { return v === null || v === undefined ? "-" : Number(v).toPrecision(5); }
 function nowMs() { return performance.timeOrigin + performance.now(); }
 
@@ -211,45 +241,55 @@ function fleetView(main) {
     }
   }
 
+  // Rows changed since the table was last drawn; drawn at most every kLineInterval ms.
+  const changedRows = new Map();
+  const drawChanged = throttled(() => {
+    for (const r of changedRows.values()) {
+      if (!lines.has(r.id)) lines.set(r.id, el("tr", { "data-id": r.id }));
+      fill(lines.get(r.id), r);
+    }
+    changedRows.clear();
+    render();
+    if (!main.dataset.firstRowsMs) main.dataset.firstRowsMs = performance.now();
+  }, kLineInterval);
   stream("/api/fleet/events", {
     rows: (changed) => {
       for (const r of changed) {
         rows.set(r.id, r);
-        if (!lines.has(r.id)) lines.set(r.id, el("tr", { "data-id": r.id }));
-        fill(lines.get(r.id), r);
+        changedRows.set(r.id, r);
       }
-      render();
-      if (!main.dataset.firstRowsMs) main.dataset.firstRowsMs = performance.now();
+      drawChanged();
     },
   });
 }
 
 // --- Job -----------------------------------------------------------------------------------------
 
-// A uPlot chart that is rebuilt when its series change and fed new data otherwise, at most every
-// kChartInterval ms (points of a fast sweep and progress samples arrive several times a second;
-// each drawing costs the browser more than the text lines).
-const kChartInterval = 500;
+// A uPlot chart that is rebuilt when its series change and fed new data otherwise. `show` keeps
+// the newest data; the page's drawing (jobView's `redraw`) calls `flush`, which draws it when the
+// chart was last drawn kChartInterval ms ago or more: a chart costs the browser more than the text.
+const kChartInterval = 1000;
 class Chart {
   constructor(container, options) {
     this.container = container;
     this.options = options;  // title, x label, y label, log y
     this.plot = null;
     this.labels = "";
-    this.drawn = 0;       // when last drawn (performance.now())
-    this.pending = null;  // the newest data not drawn yet
+    this.drawn = -Infinity;
+    this.pending = null;
   }
-  show(labels, data) {
-    const due = this.drawn + kChartInterval - performance.now();
-    if (due > 0) {
-      if (!this.pending) setTimeout(() => { const p = this.pending; this.pending = null; this.draw(p.labels, p.data); }, due);
-      this.pending = { labels, data };
-      return;
-    }
+  show(labels, data) { this.pending = { labels, data }; }
+  // True while data waits for its turn.
+  flush() {
+    if (!this.pending) return false;
+    if (performance.now() - this.drawn < kChartInterval) return true;
+    this.drawn = performance.now();
+    const { labels, data } = this.pending;
+    this.pending = null;
     this.draw(labels, data);
+    return false;
   }
   draw(labels, data) {
-    this.drawn = performance.now();
     const key = labels.join("\n");
     if (this.plot && key === this.labels) { this.plot.setData(data); return; }
     if (this.plot) this.plot.destroy();
@@ -352,13 +392,28 @@ function jobView(main, id) {
     cancel.disabled = false;
   });
 
-  function drawResult() {
-    const { labels, data } = resultData(curves, points, kind === "foot_comparison");
-    const c = [...curves.values()][0];
-    resultChart.options.x = c && c.parameter_name ? c.parameter_name : "parameter";
-    if (data[0].length > 0) resultChart.show(labels, data);
-    resultBox.dataset.points = points.length;
-  }
+  // What changed since the page was last drawn; drawn together, at most every kLineInterval ms,
+  // so that a message reaches the page within that (docs/dashboard.md states the latency) and the
+  // browser draws one frame for all of it.
+  const changes = { result: false, progress: null, running: false };
+  const redraw = throttled(() => {
+    if (changes.result) {
+      changes.result = false;
+      const { labels, data } = resultData(curves, points, kind === "foot_comparison");
+      const c = [...curves.values()][0];
+      resultChart.options.x = c && c.parameter_name ? c.parameter_name : "parameter";
+      if (data[0].length > 0) resultChart.show(labels, data);
+      if (resultBox.dataset.points !== String(points.length)) resultBox.dataset.points = points.length;
+    }
+    if (changes.progress && changes.running) {
+      setText(line, progressText(changes.progress));
+      noteShown(line, changes.progress.timestamp_us);
+    }
+    changes.progress = null;
+    const waiting = [resultChart.flush(), convergenceChart.flush()].some((w) => w);
+    if (waiting) redraw();
+  }, kLineInterval);
+  const drawResult = () => { changes.result = true; redraw(); };
 
   const restart = () => {
     curves.clear();
@@ -368,28 +423,28 @@ function jobView(main, id) {
   };
   stream("/api/job/" + id + "/events", {
     job: (row) => {
-      if (!row) { summary.textContent = "not in the database (yet)"; return; }
-      title.textContent = "Job " + row.id + ": " + (row.name || row.kind);
+      if (!row) { setText(summary, "not in the database (yet)"); return; }
+      setText(title, "Job " + row.id + ": " + (row.name || row.kind));
       kind = row.kind;
-      document.title = "cyclopt job " + row.id;
-      summary.textContent = [row.kind, row.foot ? "foot " + row.foot : "", row.state,
-                             row.submitted ? "submitted " + row.submitted : "", row.started ? "started " + row.started : "",
-                             row.finished ? "ended " + row.finished : "", row.error].filter((s) => s).join(" · ");
-      summary.dataset.state = row.state;
+      if (document.title !== "cyclopt job " + row.id) document.title = "cyclopt job " + row.id;
+      setText(summary, [row.kind, row.foot ? "foot " + row.foot : "", row.state,
+                        row.submitted ? "submitted " + row.submitted : "", row.started ? "started " + row.started : "",
+                        row.finished ? "ended " + row.finished : "", row.error].filter((s) => s).join(" · "));
+      if (summary.dataset.state !== row.state) summary.dataset.state = row.state;
       const active = row.state === "queued" || row.state === "running";
-      cancel.hidden = !active;
-      if (row.state === "queued") line.textContent = "queued, position " + row.queue_position;
-      else if (!active) line.textContent = percentText(row.percent, row.percent_lower_bound) + " | " + row.state +
-                                           " after " + durationText(row.run_seconds) +
-                                           (row.best_objective !== null ? " | best " + numberText(row.best_objective) : "");
+      if (cancel.hidden === active) cancel.hidden = !active;
+      changes.running = row.state === "running";  // else the row's line is the last word
+      if (row.state === "queued") setText(line, "queued, position " + row.queue_position);
+      else if (!active) setText(line, percentText(row.percent, row.percent_lower_bound) + " | " + row.state +
+                                      " after " + durationText(row.run_seconds) +
+                                      (row.best_objective !== null ? " | best " + numberText(row.best_objective) : ""));
       if (!active && !finalState) {
         finalState = true;
         report.replaceChildren(el("h2", {}, "Report"), el("iframe", { class: "report", src: "/job/" + id + "/report", title: "report" }));
       }
     },
     progress: (p) => {
-      line.textContent = progressText(p);
-      noteShown(line, p.timestamp_us);
+      changes.progress = p;
       const key = p.curve + "|" + p.parameter;
       if (key !== samples.key || (samples.iteration.length && p.iteration < samples.iteration[samples.iteration.length - 1])) {
         Object.assign(samples, { key, iteration: [], objective: [], violation: [] });
@@ -402,6 +457,7 @@ function jobView(main, id) {
         convergenceChart.options.title = "solve in progress: " + (p.phase || "") ;
         convergenceChart.show(["objective", "constraint violation"], [samples.iteration, samples.objective, samples.violation]);
       }
+      redraw();
     },
     curves: (rows) => { for (const c of rows) curves.set(c.curve, c); drawResult(); },
     points: (rows) => { points.push(...rows); drawResult(); },
