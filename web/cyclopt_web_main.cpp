@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
         } catch (const std::exception& e) {  // e.g. the database busy: the next refresh reads it
           std::fprintf(stderr, "cyclopt-web: reading the job list: %s\n", e.what());
         }
-        fleet.wait(~std::uint64_t{0}, std::chrono::milliseconds(static_cast<int>(config.refresh_seconds * 1000)));
+        fleet.wait_for_refresh(std::chrono::milliseconds(static_cast<int>(config.refresh_seconds * 1000)));
       }
     });
     std::thread listener([&] {

@@ -36,6 +36,7 @@ void LiveFleet::apply(const cyclopt_lcm::job_progress_t& p) {
   Entry& e = jobs_[p.job_id];
   e.progress = p;
   e.progress_seq = ++seq_;
+  if (p.percent >= 100.0) refresh_due_ = true;
   if (e.row && (e.row->job.state == "running" || e.row->job.state == "queued")) {
     apply_live(*e.row, p);
     e.row_seq = seq_;
@@ -63,6 +64,12 @@ std::uint64_t LiveFleet::wait(std::uint64_t seq, std::chrono::milliseconds timeo
   std::unique_lock lock(mutex_);
   changed_.wait_for(lock, timeout, [&] { return stopped_ || seq_ > seq; });
   return seq_;
+}
+
+void LiveFleet::wait_for_refresh(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  changed_.wait_for(lock, timeout, [&] { return stopped_ || refresh_due_; });
+  refresh_due_ = false;
 }
 
 void LiveFleet::stop() {

@@ -40,6 +40,10 @@ class LiveFleet {
 
   // Blocks until a change after `seq`, stop() or `timeout`; returns the newest sequence number.
   std::uint64_t wait(std::uint64_t seq, std::chrono::milliseconds timeout) const;
+  // For the reader of the job list: blocks until a job ended, stop() or `timeout`. A job's last
+  // progress message (100 %) follows the server's record of its end, so the list read then shows
+  // its final state at once instead of "running 100 %" until the next periodic read.
+  void wait_for_refresh(std::chrono::milliseconds timeout);
   void stop();
   bool stopped() const;
 
@@ -55,6 +59,7 @@ class LiveFleet {
   std::map<std::int64_t, Entry> jobs_;
   std::uint64_t seq_ = 0;
   bool stopped_ = false;
+  bool refresh_due_ = false;  // a job ended since the list was last read
 };
 
 }  // namespace cyclopt::web

@@ -96,3 +96,19 @@ TEST(LiveFleet, AppliesProgressAndSendsOnlyWhatChanged) {
   EXPECT_DOUBLE_EQ(ended.rows[0].job.percent, 100.0);
   EXPECT_EQ(fleet.wait(ended.seq, std::chrono::milliseconds(1)), ended.seq);  // nothing new: times out
 }
+
+// A job's last message (100 %) wakes the reader of the job list at once; other messages do not.
+TEST(LiveFleet, AJobsLastMessageAsksForTheJobListAtOnce) {
+  web::LiveFleet fleet;
+  fleet.refresh(nlohmann::json::array({job_row(1, "running")}));
+  const auto waited = [&](std::chrono::milliseconds timeout) {
+    const auto start = std::chrono::steady_clock::now();
+    fleet.wait_for_refresh(timeout);
+    return std::chrono::steady_clock::now() - start;
+  };
+  fleet.apply(progress(1, 99.0));
+  EXPECT_GE(waited(std::chrono::milliseconds(50)), std::chrono::milliseconds(50));
+  fleet.apply(progress(1, 100.0));
+  EXPECT_LT(waited(std::chrono::seconds(30)), std::chrono::seconds(10));
+  EXPECT_GE(waited(std::chrono::milliseconds(50)), std::chrono::milliseconds(50));  // asked once
+}
