@@ -2,6 +2,7 @@
 
 #include "cyclopt_channels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -150,6 +151,9 @@ void WorkerJobContext::finish_progress(storage::JobState state) {
   service::ProgressReport r = last_report_;
   r.phase = storage::to_string(state);
   r.iteration = -1;
+  // A job judged done stored what it announced, although its kind's last report may have come
+  // before its last point (an optimise job's came from the solve: "100% 0/1 | done").
+  if (state == storage::JobState::done) r.points_done = std::max(r.points_done, r.points_total);
   cyclopt_lcm::job_progress_t m = message(r);
   const service::ProgressReading end = meter_.finish(state == storage::JobState::done || state == storage::JobState::incomplete);
   m.percent = end.percent;

@@ -126,6 +126,7 @@ void expect_honest(const Watched& w) {
   EXPECT_EQ(end.phase, w.state);
   EXPECT_EQ(end.percent, 100.0);
   EXPECT_EQ(w.state, "done");
+  EXPECT_EQ(end.points_done, end.points_total) << "a done job's last message counts every point it announced";
 }
 
 // Every phase the messages show is a "phase" event (units running at once interleave their
@@ -173,6 +174,16 @@ TEST_F(JobProgress, PointFootSweepIsMonotoneAndReachesOneHundredOnlyAtTheEnd) {
     for (std::sregex_iterator it(p.phase.begin(), p.phase.end(), named), end; it != end; ++it, ++seen)
       EXPECT_TRUE(stored.count(std::stoi((*it)[1]))) << p.phase;
   EXPECT_GT(seen, 0) << "the sweep's continuation runs name their curve";
+}
+
+// Its last report comes from the solve, before the point is stored: the end still says 1/1.
+TEST_F(JobProgress, AnOptimiseJobEndsWithItsPointCounted) {
+  config_.progress_hz = 50;
+  server::Server srv(config_, kinds_, lcm_);
+  const nlohmann::json spec = {{"scene", "walker"}, {"task", "optimise"}, {"foot", "point"}, {"speed", 1.0}};
+  const Watched w = watch_job(*this, client_, "progress-optimise", spec);
+  expect_honest(w);
+  EXPECT_EQ(w.messages.back().points_total, 1);
 }
 
 TEST_F(JobProgress, TwoFootComparisonIsMonotoneAcrossItsFeet) {
