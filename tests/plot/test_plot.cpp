@@ -206,5 +206,27 @@ TEST(HtmlReport, SelfContainedWithEscapedTextTablesAndInlineFigures) {
   EXPECT_GT(fs::file_size(p), 5000u);
 }
 
+// The report's one script (report_script: animations run only on screen) is there only when a
+// figure is animated.
+TEST(HtmlReport, HoldsItsScriptOnlyWhenAFigureIsAnimated) {
+  Report report;
+  report.title = "t";
+  ReportSection section;
+  section.heading = "h";
+  ReportFigure still;
+  still.svg = "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"1\" height=\"1\"/></svg>";
+  section.figures.push_back(still);
+  report.sections.push_back(section);
+  const std::string script = "<script>" + report_script() + "</script>";
+  EXPECT_EQ(to_html(report).find("<script"), std::string::npos);
+  ReportFigure moving;
+  moving.svg = "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"1\" height=\"1\"><animate attributeName=\"width\" "
+               "from=\"0\" to=\"1\" dur=\"1s\"/></rect></svg>";
+  report.sections.front().figures.push_back(moving);
+  const std::string html = to_html(report);
+  EXPECT_NE(html.find(script), std::string::npos);
+  EXPECT_EQ(html.find("<script"), html.rfind("<script"));  // that one script only
+}
+
 }  // namespace
 }  // namespace cyclopt::plot

@@ -45,7 +45,6 @@ details summary{cursor:pointer;color:#333;margin-top:.6em}.box table{font-size:.
 .scroll{max-height:36em;overflow:auto;border:1px solid #ddd}.scroll table{margin:0}.scroll td{white-space:nowrap}
 .scroll thead th{position:sticky;top:0})";
 
-
 }  // namespace
 
 std::string svg_of(const LineChart& chart, const RenderOptions& options) { return svg_via_file(chart, options); }

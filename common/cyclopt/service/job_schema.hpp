@@ -1,10 +1,11 @@
 #pragma once
 // The job spec's JSON schema, embedded at build time: proto/schemas/job.schema.json (the fields
 // every task shares) merged with the task rules of every folder of job kinds
-// (common/cyclopt/jobs/<scene>/<scene>_tasks.schema.json), and the foot and giant-swing task schemas
-// it refers to. It is what a client checks a spec against before it sends it, without the job kinds. The server's validation (job_spec.hpp) is the full one; the
-// schema may accept more (it cannot count a start vector's length), never less
-// (tests/service/test_job_schema holds the two together).
+// (common/cyclopt/jobs/<scene>/<scene>_tasks.schema.json), and the foot and giant-swing task
+// schemas it refers to. It is what a client checks a spec against before it sends it, without the
+// job kinds. The server's validation (job_spec.hpp) is the full one; the schema may accept more
+// (it cannot count a start vector's length), never less (tests/service/test_job_schema holds the
+// two together).
 
 #include "cyclopt/service/json_schema.hpp"
 
