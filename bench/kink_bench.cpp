@@ -11,18 +11,21 @@
 //   config: today (the sweep's multistart solver: distant_start_solver of Table 6.2, progress window
 //   200, MaxQpIter 20000), kinks (the same with SqpOptions::kinks), kinksN (kinks with TolOpt 10^-N),
 //   a suffix -q for the QP budget of distant_start_solver, bandW (today's solver on f_mech rounded on
-//   the band W, GaitProblemOptions::positive_power_band; the residual is the exact f_mech's);
-//   default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
+//   the band W, GaitProblemOptions::positive_power_band; the residual is the exact f_mech's), smooth
+//   (the smoothing homotopy of walker/smoothing_homotopy.hpp with today's solver, polished by it),
+//   smooth+CONFIG (polished by CONFIG's solver), smooth-raw (no polish); default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
 #include "bench_foot.hpp"
 #include "independent_stationarity.hpp"
 #include "machine_info.hpp"
 
 #include "cyclopt/nlp/solve.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
+#include "cyclopt/walker/smoothing_homotopy.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -43,10 +46,25 @@ constexpr double kStationary = 1e-6;
 struct Configuration {
   nlp::SolverOptions solver;
   double band = 0.0;  // GaitProblemOptions::positive_power_band of the solve (W)
+  // The smoothing homotopy (walker/smoothing_homotopy.hpp) with `solver` in every stage, then the
+  // exact f_mech's polish with polish_solver (none: the last stage's point is the run's).
+  bool homotopy = false;
+  std::optional<nlp::SolverOptions> polish_solver;
 };
 
 Configuration configuration(const std::string& name) {
-  Configuration c{walker::distant_start_solver(nlp::seed_table_6_2_options()), 0.0};
+  if (name.rfind("smooth", 0) == 0) {  // smooth, smooth+CONFIG, smooth-raw
+    Configuration c = configuration("today");
+    c.homotopy = true;
+    if (name == "smooth") c.polish_solver = c.solver;
+    else if (name.rfind("smooth+", 0) == 0) c.polish_solver = configuration(name.substr(7)).solver;
+    else if (name != "smooth-raw") {
+      std::fprintf(stderr, "configuration '%s': expected smooth, smooth+CONFIG or smooth-raw\n", name.c_str());
+      std::exit(1);
+    }
+    return c;
+  }
+  Configuration c{walker::distant_start_solver(nlp::seed_table_6_2_options()), 0.0, false, std::nullopt};
   nlp::SolverOptions& o = c.solver;
   o.sqp.progress_window = walker::kMultistartProgressWindow;
   o.sqp.max_qp_iterations = kSweepQpIterations;
@@ -67,7 +85,7 @@ Configuration configuration(const std::string& name) {
     if (!rest.empty()) o.optimality_tolerance = std::pow(10.0, -std::atof(rest.c_str()));  // TolOpt 10^-N
     return c;
   }
-  std::fprintf(stderr, "configuration '%s': expected today, bandW, kinks, kinks-q or kinksN\n", name.c_str());
+  std::fprintf(stderr, "configuration '%s': expected today, bandW, kinks, kinks-q, kinksN or smooth...\n", name.c_str());
   std::exit(1);
 }
 
@@ -122,7 +140,29 @@ int main(int argc, char** argv) {
       if (std::getenv("KINK_BENCH_ONLY") && std::atoi(std::getenv("KINK_BENCH_ONLY")) != i) continue;
       walker::GaitProblem solved(model, solve_po), problem(model, po);
       const double cpu0 = bench::cpu_seconds();
-      const nlp::SolverSummary s = nlp::solve(solved, o, x0[static_cast<size_t>(i)]);
+      nlp::SolverSummary s;
+      if (c.homotopy) {
+        // solve_by_smoothing polishes with the stages' solver; another polish solver runs here.
+        const bool own_polish = c.polish_solver && c.polish_solver->sqp.kinks.enabled != o.sqp.kinks.enabled;
+        walker::SmoothingHomotopyOptions h;
+        h.polish = c.polish_solver && !own_polish;
+        const walker::SmoothingHomotopySummary hs = walker::solve_by_smoothing(model, po, o, x0[static_cast<size_t>(i)], h);
+        s = hs.final();
+        if (own_polish) {
+          nlp::SolverOptions polish = *c.polish_solver;
+          polish.print_level = o.print_level;
+          s = nlp::solve(problem, polish, s.x);
+        }
+        std::printf("       stages (iterations, ! not converged):");
+        for (const nlp::SolverSummary& stage : hs.stages) std::printf(" %d%s", stage.iterations, stage.success() ? "" : "!");
+        std::printf("\n");
+        if (!c.polish_solver) {  // the run's objective is the exact f_mech at the last stage's point
+          nlp::Evaluation e;
+          if (problem.evaluate(s.x, false, e).ok) s.objective = e.objective;
+        }
+      } else {
+        s = nlp::solve(solved, o, x0[static_cast<size_t>(i)]);
+      }
       const double cpu = bench::cpu_seconds() - cpu0;
       cpu_total += cpu;
       const bench::IndependentStationarity r = bench::independent_stationarity(problem, s.x, kKinkEps, kActive);

@@ -1,7 +1,7 @@
-// f_mech's positive part over one trapezoid interval (positive_power.hpp): the rounded rule against
-// an independent fine quadrature of its definition, against the seed's rule outside the band, its
-// exact derivative against central differences, and what the band is for: a walker solve that
-// crawls at the kink of a joint held still reaches a KKT point with it.
+// f_mech's positive part over one trapezoid interval (positive_power.hpp): the rounded and the
+// smoothed rule against an independent fine quadrature of their definitions, against the seed's
+// rule, their exact derivatives against central and complex-step differences, and what the band
+// is for: a walker solve that crawls at the kink of a joint held still reaches a KKT point with it.
 #include "cyclopt/autodiff/dual.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <random>
 #include <string>
@@ -76,6 +77,53 @@ TEST(PositivePower, RoundedRuleHasExactDerivatives) {
   }
 }
 
+// The smooth positive part written from its definition, and its fine integral as above.
+double smoothed(double p, double e) { return 0.5 * (p + std::sqrt(p * p + e * e)); }
+double fine_smoothed_integral(double p0, double p1, double dt, double e) {
+  constexpr int n = 200000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += smoothed(p0 + (p1 - p0) * (i + 0.5) / n, e);
+  return sum * dt / n;
+}
+
+// cases() and pairs whose change is below a tenth of their size (the rule's Gauss-Legendre branch).
+std::vector<std::pair<double, double>> smoothing_cases() {
+  std::vector<std::pair<double, double>> out = cases();
+  for (const auto& [p0, p1] : std::vector<std::pair<double, double>>{{0.03, 0.0301}, {-0.02, -0.0199}, {0.001, 0.0015}, {-0.004, -0.0035}})
+    out.emplace_back(p0, p1);
+  return out;
+}
+
+TEST(PositivePower, SmoothedRuleIntegratesItsDefinitionExactly) {
+  const double e = 0.01, dt = 0.37;
+  for (const auto& [p0, p1] : smoothing_cases())
+    EXPECT_NEAR(smoothed_positive_part_trapezoid(p0, p1, dt, e), fine_smoothed_integral(p0, p1, dt, e), 1e-12)
+        << "p0 " << p0 << " p1 " << p1;
+}
+
+TEST(PositivePower, SmoothedRuleTendsToTheSeedsRule) {
+  const double dt = 0.37;
+  for (const auto& [p0, p1] : smoothing_cases())
+    for (double e : {1e-2, 1e-4, 1e-8}) {  // s - max(p, 0) lies in (0, e/2], to rounding
+      const double gap = smoothed_positive_part_trapezoid(p0, p1, dt, e) - positive_part_trapezoid(p0, p1, dt);
+      EXPECT_GE(gap, -1e-16) << p0 << " " << p1 << " " << e;
+      EXPECT_LE(gap, 0.5 * e * dt + 1e-16) << p0 << " " << p1 << " " << e;
+    }
+}
+
+TEST(PositivePower, SmoothedRuleHasExactDerivatives) {
+  const double e = 0.01, dt = 0.37, h = 1e-30;
+  using C = std::complex<double>;
+  for (const auto& [p0, p1] : smoothing_cases()) {
+    using D = ad::Dual<3>;
+    const D d = smoothed_positive_part_trapezoid(D::variable(p0, 0), D::variable(p1, 1), D::variable(dt, 2), e);
+    const double cs[3] = {smoothed_positive_part_trapezoid(C(p0, h), C(p1), C(dt), e).imag() / h,
+                          smoothed_positive_part_trapezoid(C(p0), C(p1, h), C(dt), e).imag() / h,
+                          smoothed_positive_part_trapezoid(C(p0), C(p1), C(dt, h), e).imag() / h};
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(d.d[k], cs[k], 1e-9 * std::max(1.0, std::abs(cs[k]))) << p0 << " " << p1 << " " << k;
+  }
+}
+
 // The large rolling foot of issue 16 (HM, h_F 100 mm, l_HA 109.5 mm, l_HM 400 mm, rho 10) at
 // 1.3 m/s, P = 200: with the seed's rule the SQP from the starting gait crawls along the kinks
 // without a KKT point (bench/results/walker_solvers.txt); with a 1 mW band the problem is smooth,
@@ -116,6 +164,23 @@ TEST(PositivePower, GaitProblemRejectsABandOutsideItsRange) {
   GaitProblemOptions corrected;
   corrected.quadrature = Quadrature::corrected_trapezoid;
   corrected.positive_power_band = 1e-3;
+  EXPECT_THROW((void)GaitProblem(model, corrected), std::invalid_argument);
+}
+
+TEST(PositivePower, GaitProblemRejectsASmoothingOutsideItsRangeOrBesideABand) {
+  const WalkerModel<double> model = make_walker_model(foot::foot_preset("point").spec);
+  for (double e : {-1e-3, 2.0 * kMaxPositivePowerSmoothing, std::nan("")}) {
+    GaitProblemOptions po;
+    po.positive_power_smoothing = e;
+    EXPECT_THROW((void)GaitProblem(model, po), std::invalid_argument) << e;
+  }
+  GaitProblemOptions both;
+  both.positive_power_smoothing = 0.1;
+  both.positive_power_band = 1e-3;
+  EXPECT_THROW((void)GaitProblem(model, both), std::invalid_argument);
+  GaitProblemOptions corrected;
+  corrected.quadrature = Quadrature::corrected_trapezoid;
+  corrected.positive_power_smoothing = 0.1;
   EXPECT_THROW((void)GaitProblem(model, corrected), std::invalid_argument);
 }
 

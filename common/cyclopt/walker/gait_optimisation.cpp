@@ -18,7 +18,8 @@ GaitOptimum optimise_gait(const WalkerModel<double>& model, const GaitProblemOpt
   // the gait holds a joint still (positive_power.hpp): say what lets the test settle.
   const bool feasible_unsettled = !out.summary.success() && out.summary.termination != nlp::Termination::user_stop &&
                                   out.summary.constraint_violation <= 1e-6;
-  if (feasible_unsettled && options.objective == Objective::mechanical && options.positive_power_band == 0.0)
+  if (feasible_unsettled && options.objective == Objective::mechanical && options.positive_power_band == 0.0 &&
+      options.positive_power_smoothing == 0.0)
     out.summary.message += kUnsettledKinkHint;
   out.z = out.summary.x.size() == z0.size() ? out.summary.x : z0;
   out.model = problem.model_at(out.z);

@@ -16,6 +16,11 @@ GaitProblem::GaitProblem(const WalkerModel<double>& model, GaitProblemOptions op
     throw std::invalid_argument("positive_power_band: must be in [0, " + std::to_string(kMaxPositivePowerBand) + "] W");
   if (options_.positive_power_band > 0.0 && options_.quadrature != Quadrature::trapezoid)
     throw std::invalid_argument("positive_power_band: > 0 needs the trapezoid rule (quadrature \"trapezoid\")");
+  if (!(options_.positive_power_smoothing >= 0.0 && options_.positive_power_smoothing <= kMaxPositivePowerSmoothing))
+    throw std::invalid_argument("positive_power_smoothing: must be in [0, " + std::to_string(kMaxPositivePowerSmoothing) + "] W");
+  if (options_.positive_power_smoothing > 0.0 &&
+      (options_.quadrature != Quadrature::trapezoid || options_.positive_power_band > 0.0))
+    throw std::invalid_argument("positive_power_smoothing: > 0 needs the trapezoid rule and positive_power_band 0");
   bool foot_free = false;
   for (const std::string& name : options_.free_parameters) {
     const int idx = model_parameter_index(model_, name);
@@ -91,6 +96,7 @@ GaitOptions gait_options_of(const GaitProblemOptions& p, bool keep_trajectories)
   o.speed = p.speed;
   o.quadrature = p.quadrature;
   o.positive_power_band = p.positive_power_band;
+  o.positive_power_smoothing = p.positive_power_smoothing;
   o.keep_trajectories = keep_trajectories;
   return o;
 }

@@ -25,6 +25,9 @@ namespace cyclopt::walker {
 // Largest admissible GaitProblemOptions::positive_power_band (W): joint powers of a walking gait are
 // tens of W, so a wider band would change f_mech itself.
 inline constexpr double kMaxPositivePowerBand = 1.0;
+// Largest admissible GaitProblemOptions::positive_power_smoothing (W): the first stage of the
+// smoothing homotopy (smoothing_homotopy.hpp) smooths over the joint powers' own scale.
+inline constexpr double kMaxPositivePowerSmoothing = 100.0;
 
 struct GaitProblemOptions {
   Objective objective = Objective::mechanical;
@@ -34,6 +37,8 @@ struct GaitProblemOptions {
   std::optional<foot::DesignBounds> design_bounds = std::nullopt;  // eq. (10.1) rows, with free foot parameters
   double positive_power_band = 0.0;  // W, GaitOptions::positive_power_band, in [0, kMaxPositivePowerBand]; > 0
                                      // needs the trapezoid rule
+  double positive_power_smoothing = 0.0;  // W, GaitOptions::positive_power_smoothing, in
+                                          // [0, kMaxPositivePowerSmoothing]; > 0 needs the trapezoid rule and no band
 };
 
 // The options of one gait evaluation of the problem `o` (objective, speed, quadrature, band).
@@ -42,7 +47,7 @@ GaitOptions gait_options_of(const GaitProblemOptions& o, bool keep_trajectories)
 class GaitProblem : public nlp::Problem {
  public:
   // Throws std::invalid_argument naming an unknown free parameter (with the valid names) or a
-  // positive_power_band outside its range.
+  // positive_power_band or positive_power_smoothing outside its range.
   GaitProblem(const WalkerModel<double>& model, GaitProblemOptions options);
 
   int num_variables() const override;
@@ -70,10 +75,10 @@ class GaitProblem : public nlp::Problem {
   const GaitProblemOptions& options() const { return options_; }
   // Evaluations with derivatives carry f_mech's kinked terms (power_kinks.hpp) for solvers that model
   // them (nlp::KinkOptions): with the seed's rule for f_mech - the trapezoid rule with zero crossing,
-  // no positive_power_band (which rounds the kinks away).
+  // no positive_power_band or positive_power_smoothing (which round the kinks away).
   bool declares_kinks() const {
     return options_.objective == Objective::mechanical && options_.quadrature == Quadrature::trapezoid &&
-           options_.positive_power_band == 0.0;
+           options_.positive_power_band == 0.0 && options_.positive_power_smoothing == 0.0;
   }
 
  private:

@@ -32,6 +32,9 @@ struct GaitOptions {
   // W, >= 0: f_mech's positive part (5.100) rounded on |u q_dot| < band (positive_power.hpp); 0: the
   // seed's rule. Trapezoid rule only.
   double positive_power_band = 0.0;
+  // W, >= 0: f_mech's positive part smoothed to (p + sqrt(p^2 + e^2)) / 2 (positive_power.hpp), the
+  // integrand of the smoothing homotopy; 0: not smoothed. Trapezoid rule only, not with a band.
+  double positive_power_smoothing = 0.0;
 };
 
 // Indices into the inequality vector (eq. 5.104) for a given P.
@@ -232,8 +235,10 @@ PeriodicGait<T> periodic_gait(const WalkerModel<MT>& m, const BezierBasis& basis
   if (opt.quadrature == Quadrature::trapezoid) {
     for (int j = 0; j < nb; ++j)
       for (int i = 0; i + 1 < P; ++i)
-        e_mech += opt.positive_power_band > 0.0
-                      ? rounded_positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i), opt.positive_power_band)
+        e_mech += opt.positive_power_band > 0.0 ? rounded_positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i),
+                                                                                  opt.positive_power_band)
+                  : opt.positive_power_smoothing > 0.0
+                      ? smoothed_positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i), opt.positive_power_smoothing)
                       : positive_part_trapezoid(power(j, i), power(j, i + 1), dt(i));
   } else {  // in theta: int max(p, 0) dt = int max(p / theta_dot, 0) d theta
     Vector<T> power_per_theta(P);
