@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace cyclopt::foot_fit {
 namespace {
@@ -34,17 +35,36 @@ NormalBlocks normal_blocks(const ArrowEvaluation& ev) {
   return nb;
 }
 
-// S = C + lambda D_g - sum_j b_j^T b_j / (a_j + lambda D_l,j), restricted to nothing yet.
+std::vector<Eigen::Index> indices_of(const Eigen::Array<bool, Eigen::Dynamic, 1>& free) {
+  std::vector<Eigen::Index> idx;
+  for (Eigen::Index i = 0; i < free.size(); ++i)
+    if (free[i]) idx.push_back(i);
+  return idx;
+}
+
+// The free globals' block of S = C + lambda D_g - sum_j b_j^T b_j / (a_j + lambda D_l,j) and, with
+// `rhs`, of -g_g + sum_j b_j^T g_l,j / (a_j + lambda D_l,j), for the globals `free` (fixed or held
+// ones never enter a step); with `lower_only` only its lower triangle, all that the LDLT of a step
+// reads (the upper one keeps C). Element by element, in place: the solver's hot loop.
 Eigen::MatrixXd schur(const NormalBlocks& nb, const Eigen::VectorXd& local_diag, const Eigen::VectorXd& global_diag,
-                      double lambda, Eigen::VectorXd* rhs) {
-  Eigen::MatrixXd S = nb.C;
-  S.diagonal() += lambda * global_diag;
-  if (rhs) *rhs = -nb.global_gradient;
+                      double lambda, const std::vector<Eigen::Index>& free, bool lower_only, Eigen::VectorXd* rhs) {
+  const Eigen::Index F = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd S(F, F);
+  for (Eigen::Index c = 0; c < F; ++c)
+    for (Eigen::Index r = 0; r < F; ++r) S(r, c) = nb.C(free[r], free[c]);
+  for (Eigen::Index a = 0; a < F; ++a) S(a, a) += lambda * global_diag[free[a]];
+  if (rhs) {
+    rhs->resize(F);
+    for (Eigen::Index a = 0; a < F; ++a) (*rhs)[a] = -nb.global_gradient[free[a]];
+  }
+  Eigen::VectorXd b(F);
   for (Eigen::Index j = 0; j < nb.a.size(); ++j) {
     const double aj = nb.a[j] + lambda * local_diag[j];
     if (aj <= 0.0) continue;
-    S.noalias() -= nb.B.row(j).transpose() * nb.B.row(j) / aj;
-    if (rhs) *rhs += nb.B.row(j).transpose() * (nb.local_gradient[j] / aj);
+    for (Eigen::Index a = 0; a < F; ++a) b[a] = nb.B(j, free[a]);
+    for (Eigen::Index c = 0; c < F; ++c)
+      for (Eigen::Index r = lower_only ? c : 0; r < F; ++r) S(r, c) -= b[r] * b[c] / aj;
+    if (rhs) *rhs += b * (nb.local_gradient[j] / aj);
   }
   return S;
 }
@@ -92,20 +112,12 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
       double largest_in_standard_errors = std::numeric_limits<double>::quiet_NaN();
     };
     auto step_at = [&](double lam, bool project, bool in_standard_errors = false) {
-      Eigen::VectorXd rhs;
-      const Eigen::MatrixXd S = schur(nb, dl, dg, lam, &rhs);
-      std::vector<Eigen::Index> idx;
-      for (Eigen::Index i = 0; i < G; ++i)
-        if (free[i]) idx.push_back(i);
+      const std::vector<Eigen::Index> idx = indices_of(free);
       const Eigen::Index F = static_cast<Eigen::Index>(idx.size());
-      Eigen::MatrixXd Sf(F, F);
-      Eigen::VectorXd rf(F);
-      for (Eigen::Index a = 0; a < F; ++a) {
-        rf[a] = rhs[idx[a]];
-        for (Eigen::Index b = 0; b < F; ++b) Sf(a, b) = S(idx[a], idx[b]);
-      }
+      Eigen::VectorXd rf;
+      const Eigen::MatrixXd Sf = schur(nb, dl, dg, lam, idx, true, &rf);
       Step st{Eigen::VectorXd::Zero(G), Eigen::VectorXd(N), 0.0};
-      const Eigen::LDLT<Eigen::MatrixXd> ldlt(Sf);
+      const Eigen::LDLT<Eigen::MatrixXd, Eigen::Lower> ldlt(Sf);
       const Eigen::VectorXd xf = F > 0 ? Eigen::VectorXd(ldlt.solve(rf)) : Eigen::VectorXd();
       for (Eigen::Index a = 0; a < F; ++a) st.global[idx[a]] = xf[a];
       const Eigen::Index dof = N - F;
@@ -193,12 +205,11 @@ ArrowSummary solve_arrow_least_squares(const ArrowResidual& residual, Eigen::Vec
   for (Eigen::Index i = 0; i < G; ++i)
     free[i] = lower[i] < upper[i] && !(global[i] <= lower[i] && nb.global_gradient[i] > 0.0) &&
               !(global[i] >= upper[i] && nb.global_gradient[i] < 0.0);
-  s.reduced_normal_matrix = schur(nb, Eigen::VectorXd::Zero(N), Eigen::VectorXd::Zero(G), 0.0, nullptr);
-  for (Eigen::Index i = 0; i < G; ++i)
-    if (!free[i]) {
-      s.reduced_normal_matrix.row(i).setZero();
-      s.reduced_normal_matrix.col(i).setZero();
-    }
+  const std::vector<Eigen::Index> idx = indices_of(free);
+  const Eigen::MatrixXd Sf = schur(nb, Eigen::VectorXd::Zero(N), Eigen::VectorXd::Zero(G), 0.0, idx, false, nullptr);
+  s.reduced_normal_matrix = Eigen::MatrixXd::Zero(G, G);
+  for (std::size_t a = 0; a < idx.size(); ++a)
+    for (std::size_t b = 0; b < idx.size(); ++b) s.reduced_normal_matrix(idx[a], idx[b]) = Sf(a, b);
   s.free = free;
   return s;
 }

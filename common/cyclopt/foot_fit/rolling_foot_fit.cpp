@@ -180,11 +180,13 @@ ArrowResidual rolling_ankle_residual(foot::FootModel model, const std::vector<An
     const foot::FootProfile<double> prof = foot::make_profile(model, p);
     const double f0 = foot::rolling_contact(prof, 0.0).F;
     out.r.resize(2, N);
+    if (with_jacobian) out.local_jacobian.resize(2, N);
     for (int k = 0, j = 0; k < K; ++k)
       for (int i = 0; i < tracks[k].samples(); ++i, ++j) {
         const foot::RollingContact<double> c = foot::rolling_contact(prof, local[j]);
         out.r(0, j) = global[P + k] + c.F - f0 - tracks[k].x[i];  // eq. (4.15a) / (4.20a)
         out.r(1, j) = c.dF - tracks[k].z[i];                      // eq. (4.15b) / (4.20b)
+        if (with_jacobian) out.local_jacobian.col(j) << c.dF, c.ddF;  // d r_j / d theta_j
       }
     if (!with_jacobian) return out.r.allFinite();
     // F is a sum over transitions of l_i times a function of (theta - delta_i, k_i) (eq. 3.19 /
@@ -221,13 +223,9 @@ ArrowResidual rolling_ankle_residual(foot::FootModel model, const std::vector<An
       transition_partials(t, 0.0, partials);
       df0 += partials.row(0) * dtr[t];
     }
-    out.local_jacobian.resize(2, N);
     out.global_jacobian.setZero(2 * N, P + K);
     for (int k = 0, j = 0; k < K; ++k)
       for (int i = 0; i < tracks[k].samples(); ++i, ++j) {
-        const foot::RollingContact<double> c = foot::rolling_contact(prof, local[j]);
-        out.local_jacobian(0, j) = c.dF;
-        out.local_jacobian(1, j) = c.ddF;
         Rows2 dp = Rows2::Zero(2, P);
         for (int t = 0; t < T; ++t) {
           transition_partials(t, local[j], partials);
