@@ -67,9 +67,12 @@ refused with the reason and not fitted.
   --boundary-tolerance S
                        how far stance boundaries are moved for the boundary
                        spread (default 0.04 s); 0 skips it
-  --boundary-steps N   grid points per side up to the tolerance (default 4: 80
-                       refits per kinematic stance set, 24 for force-plate
-                       stances, which only shrink)
+  --boundary-steps N   0 (default): every shift that puts a stance boundary on
+                       a frame, so the spread covers every window a shift
+                       within the tolerance gives (kinematic stances at 250 Hz:
+                       440 refits, seconds per foot; force-plate stances only
+                       shrink: 24 at 100 Hz); N in 1-20: a coarser, faster grid
+                       of N points per side ((2N+1)^2 - 1 refits; 4: 10 ms, 80)
   --no-spread          no refits: conditional standard errors only
   --parameter-tolerance F
                        stop a fit when its Gauss-Newton step moves no parameter
@@ -255,7 +258,8 @@ int run_fit_command(int argc, char** argv) {
           throw std::invalid_argument("--boundary-tolerance: must be in [0, 0.2] s");
       } else if (flag == "--boundary-steps") {
         const double n = number(flag, a.value(flag));
-        if (!(n >= 1 && n <= 20 && n == std::floor(n))) throw std::invalid_argument("--boundary-steps: must be an integer in [1, 20]");
+        if (!(n >= 0 && n <= 20 && n == std::floor(n)))
+          throw std::invalid_argument("--boundary-steps: must be an integer in [0, 20] (0: every frame)");
         spread_options.boundary_steps = static_cast<int>(n);
       } else if (flag == "--parameter-tolerance") {
         parameter_tolerance = number(flag, a.value(flag));

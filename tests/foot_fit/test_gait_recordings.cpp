@@ -5,6 +5,7 @@
 // without a hand-given interval with its HMT parameters in the range of the seed's own fits
 // (appendix B), and the spreads over strides and boundaries are reported.
 #include "cyclopt/foot_fit/ankle_track.hpp"
+#include "cyclopt/foot_fit/boundary_grid.hpp"
 #include "cyclopt/foot_fit/fit_spread.hpp"
 #include "cyclopt/foot_fit/gait_trial_file.hpp"
 #include "cyclopt/foot_fit/marker_file.hpp"
@@ -15,6 +16,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <set>
 #include <sstream>
 
 namespace cf = cyclopt::foot_fit;
@@ -285,4 +288,35 @@ TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
   EXPECT_EQ(cf::add_fit_spread(single, one, {}, corners).refits.size(), 8u);  // the 3 x 3 shifts but (0, 0)
   EXPECT_TRUE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].stride_spread));
   EXPECT_FALSE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].boundary_spread));
+}
+
+// Acceptance 3 by construction (boundary_grid.hpp): the every-frame grid's data sets hold the
+// stance windows of every start and end shift within the tolerance - a 1 ms grid, random shifts,
+// the coarser grids - so a check on any finer grid lands on windows the spread refitted; and it
+// moves no boundary further than the tolerance. Kinematic stances at 250 Hz, plate stances at
+// 100 Hz (only shrinking), and both together (frames on two different grids).
+TEST(GaitRecordings, TheBoundaryGridHoldsEveryWindowOfShiftsWithinTheTolerance) {
+  const double d = cf::SpreadOptions{}.boundary_tolerance;
+  std::mt19937 random(56);
+  std::uniform_real_distribution<double> shift(-d, d);
+  for (const auto& [name, trials] :
+       {std::pair{"test_walking right", std::vector{test_walking("R")}}, {"test_walking left", std::vector{test_walking("L")}},
+        {"motion_capture_walk right", std::vector{rajagopal_walk("R")}}, {"motion_capture_walk left", std::vector{rajagopal_walk("L")}},
+        {"test_walking right and motion_capture_walk right", std::vector{test_walking("R"), rajagopal_walk("R")}}}) {
+    std::set<cf::StanceWindows> grid{cf::stance_windows(cf::stance_tracks(trials))};
+    for (const cf::MovedBoundaries& m : cf::boundary_grid(trials, d, 0)) {
+      EXPECT_LE(std::abs(m.start_shift), d) << name;
+      EXPECT_LE(std::abs(m.end_shift), d) << name;
+      EXPECT_TRUE(grid.insert(cf::stance_windows(m.tracks)).second) << name << ": a data set refitted twice";
+    }
+    std::vector<std::pair<double, double>> shifts;
+    for (int i = -40; i <= 40; ++i)
+      for (int j = -40; j <= 40; ++j) shifts.emplace_back(1e-3 * i, 1e-3 * j);
+    for (int k = 0; k < 2000; ++k) shifts.emplace_back(shift(random), shift(random));
+    for (int steps : {1, 3, 4, 7})
+      for (const cf::MovedBoundaries& m : cf::boundary_grid(trials, d, steps)) shifts.emplace_back(m.start_shift, m.end_shift);
+    for (const auto& [start, end] : shifts)
+      EXPECT_TRUE(grid.count(cf::stance_windows(cf::moved_stance_tracks(trials, start, end))))
+          << name << ": start " << start << " s, end " << end << " s gives windows the spread did not refit";
+  }
 }

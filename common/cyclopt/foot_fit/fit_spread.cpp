@@ -1,5 +1,6 @@
 #include "cyclopt/foot_fit/fit_spread.hpp"
 
+#include "cyclopt/foot_fit/boundary_grid.hpp"
 #include "cyclopt/foot_fit/seed_fitted_ranges.hpp"
 
 #include <algorithm>
@@ -91,8 +92,8 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
     throw std::invalid_argument("boundary_tolerance: " + std::to_string(o.boundary_tolerance) + " s is not in [0, 0.2] s");
   if (!(o.flag_fraction > 0.0)) throw std::invalid_argument("flag_fraction: must be > 0");
   if (o.threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: every core)");
-  if (o.boundary_steps < 1 || o.boundary_steps > 20)
-    throw std::invalid_argument("boundary_steps: " + std::to_string(o.boundary_steps) + " is not in [1, 20]");
+  if (o.boundary_steps < 0 || o.boundary_steps > 20)
+    throw std::invalid_argument("boundary_steps: " + std::to_string(o.boundary_steps) + " is not in [0, 20] (0: every frame)");
   const auto started = std::chrono::steady_clock::now();
   struct Job {
     std::vector<AnkleTrack> tracks;
@@ -107,36 +108,9 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(k));
       jobs.push_back({rest, "without " + all[k].source, true});
     }
-  // Boundary refits on the grid of start and end shifts {0, +-d/n, ..., +-d} (n =
-  // boundary_steps), each data set once: a shift that moves no boundary (a plate's stance only
-  // shrinks) or moves them as an earlier one did is skipped. Inward shifts come first, so a refit
-  // of plate stances is named by the shifts it made.
-  auto windows = [](const std::vector<AnkleTrack>& tracks) {
-    std::vector<std::pair<int, int>> w;
-    for (const AnkleTrack& t : tracks) w.emplace_back(t.first_sample, t.last_sample);
-    return w;
-  };
-  std::vector<std::vector<std::pair<int, int>>> seen{windows(all)};
-  const double d = o.boundary_tolerance;
-  std::vector<double> later{0.0};
-  for (int i = 1; i <= o.boundary_steps; ++i) later.push_back(d * i / o.boundary_steps);
-  for (int i = 1; i <= o.boundary_steps; ++i) later.push_back(-d * i / o.boundary_steps);
-  if (d > 0.0)
-    for (double ds : later)
-      for (double minus_de : later) {
-        const double de = -minus_de;
-        std::vector<AnkleTrack> tracks;
-        for (const GaitTrial& t : trials)
-          for (std::size_t k = 0; k < t.stances.size(); ++k)
-            if (t.stances[k].complete()) {
-              const bool contact = t.stances[k].contact;
-              tracks.push_back(
-                  stance_track(t, static_cast<int>(k), contact ? std::max(ds, 0.0) : ds, contact ? std::min(de, 0.0) : de));
-            }
-        if (std::find(seen.begin(), seen.end(), windows(tracks)) != seen.end()) continue;
-        seen.push_back(windows(tracks));
-        jobs.push_back({std::move(tracks), shift_text(ds, de), false});
-      }
+  // Boundary refits: every distinct set of stance windows over the grid (boundary_grid.hpp).
+  for (MovedBoundaries& m : boundary_grid(trials, o.boundary_tolerance, o.boundary_steps))
+    jobs.push_back({std::move(m.tracks), shift_text(m.start_shift, m.end_shift), false});
   // Independent solves: each thread takes the next job, so the result does not depend on the
   // number of threads.
   FitSpread spread;

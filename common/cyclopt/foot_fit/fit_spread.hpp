@@ -7,13 +7,18 @@
 //  - over the strides, with K >= 2 complete stances: the jackknife standard error of the K fits
 //    that each leave one stance out, sqrt((K-1)/K sum (p_(k) - mean)^2);
 //  - over the boundaries: the largest change of a parameter when the start and the end of every
-//    stance move on a grid of steps boundary_tolerance / boundary_steps up to +-boundary_tolerance
-//    (9 x 9 - 1 = 80 refits by default). On real recordings the HMT fit hops between local
-//    optima as a boundary moves, so the change is not monotone in the shift and the corners alone
-//    miss much of it (coverage: bench/results/foot_fit_real_data.txt).
-//    A stance bounded by a loaded plate only shrinks (start later, end earlier: 24 refits): the
-//    rolling phase lies within the contact the plate measured, but how much of the contact's
-//    first and last tens of milliseconds (heel impact, toe flexion) is rigid rolling is uncertain.
+//    stance move up to +-boundary_tolerance, each distinct set of stance windows refitted once
+//    (boundary_grid.hpp). By default every shift that puts a boundary on a frame is tried, so
+//    every window that any shift within the tolerance gives is refitted (21 x 21 - 1 = 440 refits
+//    for one kinematic stance set at 250 Hz, 80 at 100 Hz): on real recordings the HMT fit hops
+//    between local optima as a boundary moves, so the change is not monotone in the shift, and a
+//    coarser grid misses changes between its points (coverage and time:
+//    bench/results/foot_fit_real_data.txt). boundary_steps n >= 1 trades that for time: the grid
+//    {0, +-boundary_tolerance/n, ..., +-boundary_tolerance} ((2n + 1)^2 - 1 refits).
+//    A stance bounded by a loaded plate only shrinks (start later, end earlier; 5 x 5 - 1 = 24
+//    refits at 100 Hz): the rolling phase lies within the contact the plate measured, but how
+//    much of the contact's first and last tens of milliseconds (heel impact, toe flexion) is
+//    rigid rolling is uncertain.
 // A parameter is flagged when it sits on a bound, or when a spread exceeds flag_fraction of the
 // range the seed's own fits of that parameter span (seed_fitted_ranges.hpp).
 
@@ -31,7 +36,7 @@ struct SpreadOptions {
   // foot loads the plate, its first and last tens of milliseconds (heel impact, toe flexion) are
   // not rigid rolling.
   double boundary_tolerance = 0.04;
-  int boundary_steps = 4;  // grid points per side: shifts of 10 ms at 40 ms
+  int boundary_steps = 0;  // 0: every frame; n: grid points per side (4: shifts of 10 ms at 40 ms)
   double flag_fraction = 0.25;
   int threads = 0;  // refits run in parallel, 0: one thread per core; the results do not depend on it
 };
