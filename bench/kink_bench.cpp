@@ -13,7 +13,8 @@
 //   a suffix -q for the QP budget of distant_start_solver, bandW (today's solver on f_mech rounded on
 //   the band W, GaitProblemOptions::positive_power_band; the residual is the exact f_mech's), smooth
 //   (the smoothing homotopy of walker/smoothing_homotopy.hpp with today's solver, polished by it),
-//   smooth+CONFIG (polished by CONFIG's solver), smooth-raw (no polish); default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
+//   smooth+CONFIG (polished by CONFIG's solver), smooth-raw (no polish), CONFIG-nobound (CONFIG
+//   without SqpOptions::evaluable_step_bound); default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
 #include "bench_foot.hpp"
 #include "independent_stationarity.hpp"
 #include "machine_info.hpp"
@@ -62,6 +63,11 @@ Configuration configuration(const std::string& name) {
       std::fprintf(stderr, "configuration '%s': expected smooth, smooth+CONFIG or smooth-raw\n", name.c_str());
       std::exit(1);
     }
+    return c;
+  }
+  if (name.size() > 8 && name.substr(name.size() - 8) == "-nobound") {  // CONFIG-nobound: without the evaluable step bound
+    Configuration c = configuration(name.substr(0, name.size() - 8));
+    c.solver.sqp.evaluable_step_bound = false;
     return c;
   }
   Configuration c{walker::distant_start_solver(nlp::seed_table_6_2_options()), 0.0, false, std::nullopt};
