@@ -216,6 +216,42 @@ TEST(ActiveSetSolver, RandomInfeasibleQpsAreDetected) {
   }
 }
 
+// A consistent equality whose warm-started subspace minimiser is long: 30 variables with Hessian
+// curvatures 1 down to 1e-8, an equality row of entries up to 350 (the walker's elastic
+// subproblems met |x| ~ 1e6 with such rows), a warm bound on a 31st variable. E x = e then holds
+// only to the rounding of E x (~1e-7 at |x| ~ 2e7), and the start must not call it inconsistent.
+TEST(ActiveSetSolver, LongWarmStartStepOnAConsistentEqualityIsNotInfeasible) {
+  for (int seed = 0; seed < 10; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const int n = 31;
+    VectorXd h(n), g(n);
+    for (int i = 0; i + 1 < n; ++i) {
+      h[i] = std::pow(10.0, -8.0 * i / (n - 2));
+      g[i] = u(rng);
+    }
+    h[n - 1] = 1.0;
+    g[n - 1] = 0.0;
+    QuadraticProgram qp = unconstrained(h.asDiagonal(), g);
+    qp.equality_matrix = MatrixXd::Zero(1, n);
+    for (int i = 0; i + 1 < n; ++i) qp.equality_matrix(0, i) = 350.0 * u(rng);
+    qp.equality_rhs = VectorXd::Constant(1, 4.0);
+    qp.lower_bounds = VectorXd::Constant(n, -kInf);
+    qp.lower_bounds[n - 1] = 0.0;
+    cyclopt::qp::WorkingSet warm;
+    warm.lower_bounds = {n - 1};
+    const QpSolution s = solve_active_set(qp, {}, warm);
+    ASSERT_EQ(s.status, QpStatus::optimal) << "seed " << seed << ": " << s.message;
+    const double scale = qp.equality_matrix.cwiseAbs().sum() * s.x.lpNorm<Eigen::Infinity>();
+    EXPECT_GT(s.x.lpNorm<Eigen::Infinity>(), 1e6) << seed;
+    EXPECT_LE(std::abs(qp.equality_matrix.row(0).dot(s.x) - 4.0), 1e-13 * scale) << seed;
+    const VectorXd stationarity = qp.hessian * s.x + qp.gradient + qp.equality_matrix.transpose() * s.equality_multipliers -
+                                  s.lower_bound_multipliers;
+    EXPECT_LE(stationarity.lpNorm<Eigen::Infinity>(), 1e-8 * std::max(1.0, s.equality_multipliers.cwiseAbs().maxCoeff()))
+        << seed;
+  }
+}
+
 TEST(ActiveSetSolver, WarmStartFromOwnSolutionNeedsNoWork) {
   const QuadraticProgram qp = nocedal_wright_example_16_4();
   const QpSolution cold = solve_active_set(qp);

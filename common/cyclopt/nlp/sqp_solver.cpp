@@ -320,7 +320,7 @@ std::optional<SearchDirection> SqpRun::relaxed_direction() {
     const qp::QpSolution relaxed = solve_l1_relaxed_subproblem(here(), W_, mu, sqp_.qp, sqp_.screening, warm);
     summary_.qp_iterations += relaxed.iterations;
     if (relaxed.status != qp::QpStatus::optimal) {
-      stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status));
+      stop(Termination::numerical_failure, std::string("relaxed QP (6.13): ") + qp::to_string(relaxed.status) + ": " + relaxed.message);
       return std::nullopt;
     }
     warm = relaxed.working_set;

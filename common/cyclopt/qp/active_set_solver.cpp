@@ -25,6 +25,8 @@ constexpr double kDependenceTolerance = 1e-9;
 constexpr double kDirectionTolerance = 1e-12;
 // A subspace Newton step below this (relative to max(1, |x|_inf)) is rounding noise.
 constexpr double kStationaryStep = 1e-13;
+// Ulps of |E| |x| + |e| that E x = e may miss by rounding alone (the consistency check of the start).
+constexpr double kEqualityRoundingUlps = 64.0;
 
 // A_in rows, then finite upper bounds (x_i <= u_i), then finite lower bounds (-x_i <= -l_i):
 // every inequality-type constraint as one row of C x <= c.
@@ -471,7 +473,14 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
                                    .p;
     }
   }
-  if (m_eq && (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() > tol) {
+  // Redundant equality rows must agree to the tolerance, or to the rounding of E x where the warm
+  // start's subspace step is long (from an ill-conditioned Hessian: |x| ~ 1e6 in the walker's
+  // elastic subproblems, where E x rounds at ~1e-7 with consistent rows).
+  const double equality_rounding =
+      m_eq ? kEqualityRoundingUlps * std::numeric_limits<double>::epsilon() *
+                 (E.cwiseAbs().rowwise().sum().maxCoeff() * x.lpNorm<Eigen::Infinity>() + qp.equality_rhs.lpNorm<Eigen::Infinity>())
+           : 0.0;
+  if (m_eq && (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() > std::max(tol, equality_rounding)) {
     sol.status = QpStatus::infeasible;
     sol.message = "equality constraints are inconsistent (redundant rows contradict each other)";
     sol.x = x;
