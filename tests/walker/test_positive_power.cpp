@@ -26,11 +26,14 @@ namespace {
 // The rounded positive part written from its definition (not from the pieces of the rule).
 double rounded(double p, double e) { return std::abs(p) < e ? (p + e) * (p + e) / (4.0 * e) : std::max(p, 0.0); }
 
-// Its integral over the linear p from p0 to p1, by the midpoint rule on 200000 pieces.
-double fine_integral(double p0, double p1, double dt, double e) {
+// The smooth positive part written from its definition.
+double smoothed(double p, double e) { return 0.5 * (p + std::sqrt(p * p + e * e)); }
+
+// The integral of s(p, e) over the linear p from p0 to p1, by the midpoint rule on 200000 pieces.
+double fine_integral(double (*s)(double, double), double p0, double p1, double dt, double e) {
   constexpr int n = 200000;
   double sum = 0.0;
-  for (int i = 0; i < n; ++i) sum += rounded(p0 + (p1 - p0) * (i + 0.5) / n, e);
+  for (int i = 0; i < n; ++i) sum += s(p0 + (p1 - p0) * (i + 0.5) / n, e);
   return sum * dt / n;
 }
 
@@ -49,7 +52,7 @@ TEST(PositivePower, RoundedRuleIntegratesItsDefinitionExactly) {
   const double e = 0.01, dt = 0.37;
   for (const auto& [p0, p1] : cases()) {
     const double rule = rounded_positive_part_trapezoid(p0, p1, dt, e);
-    EXPECT_NEAR(rule, fine_integral(p0, p1, dt, e), 1e-11) << "p0 " << p0 << " p1 " << p1;
+    EXPECT_NEAR(rule, fine_integral(rounded, p0, p1, dt, e), 1e-11) << "p0 " << p0 << " p1 " << p1;
   }
 }
 
@@ -77,15 +80,6 @@ TEST(PositivePower, RoundedRuleHasExactDerivatives) {
   }
 }
 
-// The smooth positive part written from its definition, and its fine integral as above.
-double smoothed(double p, double e) { return 0.5 * (p + std::sqrt(p * p + e * e)); }
-double fine_smoothed_integral(double p0, double p1, double dt, double e) {
-  constexpr int n = 200000;
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i) sum += smoothed(p0 + (p1 - p0) * (i + 0.5) / n, e);
-  return sum * dt / n;
-}
-
 // cases() and pairs whose change is below a tenth of their size (the rule's Gauss-Legendre branch).
 std::vector<std::pair<double, double>> smoothing_cases() {
   std::vector<std::pair<double, double>> out = cases();
@@ -97,7 +91,7 @@ std::vector<std::pair<double, double>> smoothing_cases() {
 TEST(PositivePower, SmoothedRuleIntegratesItsDefinitionExactly) {
   const double e = 0.01, dt = 0.37;
   for (const auto& [p0, p1] : smoothing_cases())
-    EXPECT_NEAR(smoothed_positive_part_trapezoid(p0, p1, dt, e), fine_smoothed_integral(p0, p1, dt, e), 1e-12)
+    EXPECT_NEAR(smoothed_positive_part_trapezoid(p0, p1, dt, e), fine_integral(smoothed, p0, p1, dt, e), 1e-12)
         << "p0 " << p0 << " p1 " << p1;
 }
 
