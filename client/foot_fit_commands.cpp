@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cyclopt::client {
@@ -202,6 +204,26 @@ nlohmann::json trial_json(const ff::GaitTrial& t) {
           {"direction_estimated", t.ankle.direction_estimated}, {"notes", t.ankle.notes}, {"stances", stances}};
 }
 
+// The refits that did not start or converge, one line per reason with how many and a few of them
+// (every frame's window makes hundreds of refits; --json lists each).
+void print_refit_notes(const ff::FitSpread& refits) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> by_reason;
+  for (const ff::Refit& r : refits.refits) {
+    if (r.note.empty()) continue;
+    const std::string reason = r.note + (r.started ? " (counted where it stopped)" : " (left out)");
+    auto it = std::find_if(by_reason.begin(), by_reason.end(), [&](const auto& g) { return g.first == reason; });
+    if (it == by_reason.end()) it = by_reason.insert(by_reason.end(), {reason, {}});
+    it->second.push_back(r.what);
+  }
+  constexpr std::size_t kShown = 3;
+  for (const auto& [reason, whats] : by_reason) {
+    std::string shown;
+    for (std::size_t k = 0; k < std::min(whats.size(), kShown); ++k) shown += (k ? "; " : "") + whats[k];
+    std::printf("refits %zu of %zu: %s - %s%s\n", whats.size(), refits.refits.size(), reason.c_str(), shown.c_str(),
+                whats.size() > kShown ? "; ..." : "");
+  }
+}
+
 }  // namespace
 
 int run_fit_command(int argc, char** argv) {
@@ -346,9 +368,7 @@ int run_fit_command(int argc, char** argv) {
                   start.z_min, start.heel.centre, start.heel.radius, start.heel.samples, start.forefoot.centre,
                   start.forefoot.radius, start.forefoot.samples);
       for (const ff::FootFitResult* f : shown) print_fit(*f);
-      for (const ff::Refit& r : refits.refits)
-        if (!r.note.empty())
-          std::printf("refit %s: %s%s\n", r.what.c_str(), r.note.c_str(), r.started ? "" : " (left out)");
+      print_refit_notes(refits);
       if (spread) std::printf("refits for the spreads: %.3f s\n", refits.seconds);
       if (model == "both")
         std::printf("HMT vs HM: RMS %.4f mm vs %.4f mm (%s)\n", 1e3 * fit.hmt.rms, 1e3 * fit.hm.rms,
