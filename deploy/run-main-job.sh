@@ -12,8 +12,9 @@
 # LCM traffic stays inside a private network namespace created here (needs root): nothing goes
 # on the host's network. Run after the build (cmake --build build).
 # Environment: FOOT (preset or foot JSON file, default P2-shoes-left-HMT, the seed's best fitted
-# foot), SPEEDS (lo:step:hi, m/s, default 0.8:0.1:1.4), STARTS (default 10), SEED_SPEED (a speed
-# of SPEEDS, default 1.2), GIANT_SWING=1 to add the giant swing's stroboscope (about 70 s of CPU).
+# foot), SPEEDS (lo:step:hi, m/s, default 0.8:0.1:1.4), STARTS (default 20, as the seed's
+# multistart), SEED_SPEED (a speed of SPEEDS, default 1.2), GIANT_SWING=1 to add the giant swing's
+# stroboscope (about 70 s of CPU).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -38,7 +39,7 @@ FOOT_JSON=$([ -f "$FOOT" ] && cat "$FOOT" || printf '"%s"' "$FOOT")
 cat > "$OUT/comparison.json" <<SPEC
 {"scene": "walker", "task": "foot_comparison", "name": "$FOOT against point feet, $SPEEDS m/s",
  "feet": [$FOOT_JSON], "reference": "point", "speeds": "$SPEEDS", "objective": "f_mech",
- "multistart": {"starts": ${STARTS:-10}}, "continuation": {"seed_speeds": $SEED_SPEED}}
+ "multistart": {"starts": ${STARTS:-20}}, "continuation": {"seed_speeds": $SEED_SPEED}}
 SPEC
 # An incomplete job (exit 5: some speeds without a converged gait) still gets its table, pictures
 # and report; the script then ends with that exit code.
