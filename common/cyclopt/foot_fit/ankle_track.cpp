@@ -1,5 +1,6 @@
 #include "cyclopt/foot_fit/ankle_track.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -85,7 +86,11 @@ std::vector<AnkleTrack> stance_tracks(const std::vector<GaitTrial>& trials, doub
   std::vector<AnkleTrack> tracks;
   for (const GaitTrial& t : trials)
     for (std::size_t k = 0; k < t.stances.size(); ++k)
-      if (t.stances[k].complete()) tracks.push_back(stance_track(t, static_cast<int>(k), start_shift, end_shift));
+      if (t.stances[k].complete()) {
+        const bool contact = t.stances[k].contact;
+        tracks.push_back(stance_track(t, static_cast<int>(k), contact ? std::max(start_shift, 0.0) : start_shift,
+                                      contact ? std::min(end_shift, 0.0) : end_shift));
+      }
   return tracks;
 }
 

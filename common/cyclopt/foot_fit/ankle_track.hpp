@@ -36,7 +36,10 @@ AnkleTrack sagittal_track(const AnkleSeries& ankle, int first, int last, const s
 // moved boundary stops at the last frame before missing ankle data.
 AnkleTrack stance_track(const GaitTrial& trial, int stance, double start_shift = 0.0, double end_shift = 0.0);
 
-// The tracks of every complete stance of the trials, in order (what the fit fits).
+// The tracks of every complete stance of the trials, in order (what the fit fits), with every start
+// moved by start_shift and every end by end_shift (s), except that a stance bounded by a loaded
+// plate only shrinks (start later, end earlier): its rolling phase lies within the contact the
+// plate measured.
 std::vector<AnkleTrack> stance_tracks(const std::vector<GaitTrial>& trials, double start_shift = 0.0, double end_shift = 0.0);
 
 // A trial cut to one rolling phase, as the seed's are (eq. 4.5: the trial starts at first

@@ -39,18 +39,6 @@ std::vector<double> boundary_shifts(const std::vector<GaitTrial>& trials, double
   return shifts;
 }
 
-std::vector<AnkleTrack> moved_stance_tracks(const std::vector<GaitTrial>& trials, double start_shift, double end_shift) {
-  std::vector<AnkleTrack> tracks;
-  for (const GaitTrial& t : trials)
-    for (std::size_t k = 0; k < t.stances.size(); ++k)
-      if (t.stances[k].complete()) {
-        const bool contact = t.stances[k].contact;
-        tracks.push_back(stance_track(t, static_cast<int>(k), contact ? std::max(start_shift, 0.0) : start_shift,
-                                      contact ? std::min(end_shift, 0.0) : end_shift));
-      }
-  return tracks;
-}
-
 std::vector<MovedBoundaries> boundary_grid(const std::vector<GaitTrial>& trials, double tolerance, int steps) {
   const std::vector<double> starts = boundary_shifts(trials, tolerance, steps);
   // Inward for an end is earlier: 0, then the earlier shifts, then the later ones.
@@ -59,11 +47,11 @@ std::vector<MovedBoundaries> boundary_grid(const std::vector<GaitTrial>& trials,
     if (s < 0.0) ends.push_back(s);
   for (double s : starts)
     if (s > 0.0) ends.push_back(s);
-  std::set<StanceWindows> seen{stance_windows(moved_stance_tracks(trials, 0.0, 0.0))};
+  std::set<StanceWindows> seen{stance_windows(stance_tracks(trials))};
   std::vector<MovedBoundaries> grid;
   for (double start : starts)
     for (double end : ends) {
-      std::vector<AnkleTrack> tracks = moved_stance_tracks(trials, start, end);
+      std::vector<AnkleTrack> tracks = stance_tracks(trials, start, end);
       if (seen.insert(stance_windows(tracks)).second) grid.push_back({start, end, std::move(tracks)});
     }
   return grid;

@@ -28,17 +28,12 @@ StanceWindows stance_windows(const std::vector<AnkleTrack>& tracks);
 // stance on a frame, and +-tolerance; steps n >= 1: the grid {0, +-tolerance/n, ..., +-tolerance}.
 std::vector<double> boundary_shifts(const std::vector<GaitTrial>& trials, double tolerance, int steps);
 
-// The tracks of the trials' complete stances with every start moved by start_shift and every
-// end by end_shift (s), except that a stance bounded by a loaded plate only shrinks (start later,
-// end earlier): its rolling phase lies within the contact the plate measured.
-std::vector<AnkleTrack> moved_stance_tracks(const std::vector<GaitTrial>& trials, double start_shift, double end_shift);
-
 struct MovedBoundaries {
   double start_shift = 0.0, end_shift = 0.0;  // s
   std::vector<AnkleTrack> tracks;
 };
 
-// Every distinct data set of moved_stance_tracks over start and end shifts from boundary_shifts,
+// Every distinct data set of stance_tracks (ankle_track.hpp) over start and end shifts from boundary_shifts,
 // but the unmoved one, each once under the first shift pair that gives it; inward shifts come
 // first, so a plate's shrunk stances are named by the shifts that made them.
 std::vector<MovedBoundaries> boundary_grid(const std::vector<GaitTrial>& trials, double tolerance, int steps);
