@@ -476,11 +476,11 @@ QpSolution solve_active_set(const QuadraticProgram& qp, const ActiveSetOptions& 
   // Redundant equality rows must agree to the tolerance, or to the rounding of E x where the warm
   // start's subspace step is long (from an ill-conditioned Hessian: |x| ~ 1e6 in the walker's
   // elastic subproblems, where E x rounds at ~1e-7 with consistent rows).
-  const double equality_rounding =
-      m_eq ? kEqualityRoundingUlps * std::numeric_limits<double>::epsilon() *
-                 (E.cwiseAbs().rowwise().sum().maxCoeff() * x.lpNorm<Eigen::Infinity>() + qp.equality_rhs.lpNorm<Eigen::Infinity>())
-           : 0.0;
-  if (m_eq && (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() > std::max(tol, equality_rounding)) {
+  const double equality_residual = m_eq ? (E * x - qp.equality_rhs).lpNorm<Eigen::Infinity>() : 0.0;
+  if (equality_residual > tol &&
+      equality_residual > kEqualityRoundingUlps * std::numeric_limits<double>::epsilon() *
+                              (E.cwiseAbs().rowwise().sum().maxCoeff() * x.lpNorm<Eigen::Infinity>() +
+                               qp.equality_rhs.lpNorm<Eigen::Infinity>())) {
     sol.status = QpStatus::infeasible;
     sol.message = "equality constraints are inconsistent (redundant rows contradict each other)";
     sol.x = x;
