@@ -148,13 +148,12 @@ int main(int argc, char** argv) {
       const double cpu0 = bench::cpu_seconds();
       nlp::SolverSummary s;
       if (c.homotopy) {
-        // solve_by_smoothing polishes with the stages' solver; another polish solver runs here.
-        const bool own_polish = c.polish_solver && c.polish_solver->sqp.kinks.enabled != o.sqp.kinks.enabled;
+        // The stages here, the polish below: its solver may differ from theirs (smooth+CONFIG).
         walker::SmoothingHomotopyOptions h;
-        h.polish = c.polish_solver && !own_polish;
+        h.polish = false;
         const walker::SmoothingHomotopySummary hs = walker::solve_by_smoothing(model, po, o, x0[static_cast<size_t>(i)], h);
         s = hs.final();
-        if (own_polish) {
+        if (c.polish_solver) {
           nlp::SolverOptions polish = *c.polish_solver;
           polish.print_level = o.print_level;
           s = nlp::solve(problem, polish, s.x);
