@@ -118,6 +118,12 @@ double GaitProblem::refined_objective(const Eigen::VectorXd& z, int factor) cons
 }
 
 nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out) {
+  GaitEvaluation e;
+  return evaluate(z, with_derivatives, out, e);
+}
+
+nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out,
+                                            GaitEvaluation& e) {
   if (z.size() != num_variables())
     throw std::invalid_argument("z: " + std::to_string(z.size()) + " entries, expected " + std::to_string(num_variables()));
   const Eigen::VectorXd x = gait_parameters(z);
@@ -125,7 +131,6 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
   std::optional<GaitEvaluator> local;
   if (!free_indices_.empty()) local.emplace(model_at(z));
   const GaitEvaluator& ev = local ? *local : evaluator_;
-  GaitEvaluation e;
   if (with_derivatives) {
     e = ev.evaluate_with_derivatives(x, gait_options(false), free_indices_);
   } else {
@@ -181,13 +186,12 @@ nlp::EvaluationStatus GaitProblem::evaluate(const Eigen::VectorXd& z, bool with_
 std::string GaitProblem::variable_name(int i) const {
   if (i < gait_count_) {
     const int nb = model_.joint_count, M = model_.constants.bezier_degree;
-    static const char* joints[] = {"H1", "H2", "K1", "K2", "A1", "A2"};
     const int coeff = 2 + i / nb, j = i % nb;
     if (coeff == M) {
       static const char* last[] = {"H1-", "H2-", "K1-", "K2-", "F1-", "F2-"};
       return std::string("alpha_tilde_M[") + last[j] + "]";  // eq. (5.55)
     }
-    return "alpha_" + std::to_string(coeff) + "[" + joints[j] + "]";
+    return "alpha_" + std::to_string(coeff) + "[" + joint_name(j) + "]";
   }
   return parameter_names_[free_indices_[i - gait_count_]];
 }

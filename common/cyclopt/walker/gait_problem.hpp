@@ -56,6 +56,9 @@ class GaitProblem : public nlp::Problem {
   Eigen::VectorXd lower_bounds() const override;
   Eigen::VectorXd upper_bounds() const override;
   nlp::EvaluationStatus evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out) override;
+  // evaluate() that also hands back the gait evaluation it rests on (joint powers, interval
+  // durations, step length; with derivatives the joint powers' Jacobian).
+  nlp::EvaluationStatus evaluate(const Eigen::VectorXd& z, bool with_derivatives, nlp::Evaluation& out, GaitEvaluation& gait);
   std::unique_ptr<nlp::Problem> clone() const override { return std::make_unique<GaitProblem>(*this); }
   std::string variable_name(int i) const override;
   std::string constraint_name(bool equality, int i) const override;

@@ -31,6 +31,11 @@ inline constexpr int kMaxCoordinates = kMaxJoints + 1;  // q_s = [theta; q_b]
 enum Segment { seg_T = 0, seg_O1, seg_O2, seg_U1, seg_U2, seg_F1, seg_F2 };
 // Joint indices into q_b (eq. 5.3): hips, knees, ankles.
 enum Joint { joint_H1 = 0, joint_H2, joint_K1, joint_K2, joint_A1, joint_A2 };
+// "H1" .. "A2" for joint j in [0, kMaxJoints).
+inline const char* joint_name(int j) {
+  static const char* names[kMaxJoints] = {"H1", "H2", "K1", "K2", "A1", "A2"};
+  return names[j];
+}
 
 template <class T>
 using SlotMatrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSlots, kMaxSlots>;
