@@ -14,13 +14,16 @@
 //   the band W, GaitProblemOptions::positive_power_band; the residual is the exact f_mech's), smooth
 //   (the smoothing homotopy of walker/smoothing_homotopy.hpp with today's solver, polished by it),
 //   smooth+CONFIG (polished by CONFIG's solver), smooth-raw (no polish), CONFIG-nobound (CONFIG
-//   without SqpOptions::evaluable_step_bound); default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
+//   without SqpOptions::evaluable_step_bound), CONFIG+held[N] (CONFIG's run, then its end point polished on
+//   the manifold of its held joints, walker/held_joint_solve.hpp, with TolOpt 10^-N, default Table 6.2's);
+//   default: today kinks. KINK_BENCH_ONLY=i runs start i alone.
 #include "bench_foot.hpp"
 #include "independent_stationarity.hpp"
 #include "machine_info.hpp"
 
 #include "cyclopt/nlp/solve.hpp"
 #include "cyclopt/walker/distant_start_solver.hpp"
+#include "cyclopt/walker/held_joint_solve.hpp"
 #include "cyclopt/walker/smoothing_homotopy.hpp"
 #include "cyclopt/walker/starting_gait.hpp"
 
@@ -51,9 +54,18 @@ struct Configuration {
   // exact f_mech's polish with polish_solver (none: the last stage's point is the run's).
   bool homotopy = false;
   std::optional<nlp::SolverOptions> polish_solver;
+  // The end point polished on the manifold of its held joints (walker/held_joint_solve.hpp) with
+  // `solver` at this TolOpt.
+  std::optional<double> held_tolerance;
 };
 
 Configuration configuration(const std::string& name) {
+  if (const std::size_t plus = name.find("+held"); plus != std::string::npos) {  // CONFIG+held[N]
+    Configuration c = configuration(name.substr(0, plus));
+    const std::string digits = name.substr(plus + 5);
+    c.held_tolerance = digits.empty() ? c.solver.optimality_tolerance : std::pow(10.0, -std::atof(digits.c_str()));
+    return c;
+  }
   if (name.rfind("smooth", 0) == 0) {  // smooth, smooth+CONFIG, smooth-raw
     Configuration c = configuration("today");
     c.homotopy = true;
@@ -70,7 +82,7 @@ Configuration configuration(const std::string& name) {
     c.solver.sqp.evaluable_step_bound = false;
     return c;
   }
-  Configuration c{walker::distant_start_solver(nlp::seed_table_6_2_options()), 0.0, false, std::nullopt};
+  Configuration c{walker::distant_start_solver(nlp::seed_table_6_2_options()), 0.0, false, std::nullopt, std::nullopt};
   nlp::SolverOptions& o = c.solver;
   o.sqp.progress_window = walker::kMultistartProgressWindow;
   o.sqp.max_qp_iterations = kSweepQpIterations;
@@ -167,6 +179,18 @@ int main(int argc, char** argv) {
         }
       } else {
         s = nlp::solve(solved, o, x0[static_cast<size_t>(i)]);
+      }
+      if (c.held_tolerance) {
+        nlp::SolverOptions manifold = o;
+        manifold.optimality_tolerance = *c.held_tolerance;
+        const walker::HeldJointSolve h = walker::solve_on_held_joints(model, po, manifold, s);
+        if (h.manifold) {
+          std::printf("       held joints:");
+          for (int j : h.joints) std::printf(" %s", walker::joint_name(j));
+          std::printf("; on their manifold: %s, %d iterations, f_mech %.8f\n", nlp::to_string(h.manifold->termination),
+                      h.manifold->iterations, h.manifold->objective);
+        }
+        s = h.result;
       }
       const double cpu = bench::cpu_seconds() - cpu0;
       cpu_total += cpu;
