@@ -1,10 +1,10 @@
 // The smoothing homotopy's schedule and its checks (walker/smoothing_homotopy.hpp): stages e =
 // first, first * factor, ... >= last, each starting where the one before ended, then the exact
 // f_mech's polish; options out of range name their field.
-#include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/nlp/solver_options.hpp"
 #include "cyclopt/walker/smoothing_homotopy.hpp"
-#include "cyclopt/walker/starting_gait.hpp"
+
+#include "reference_gaits.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,14 +14,13 @@
 namespace cyclopt::walker {
 namespace {
 
+// The reference foot's starting gait at 1.3 m/s (reference_gaits.hpp, computed once per binary); with
+// no free parameters z is the gait parameters themselves.
 struct Fixture {
-  WalkerModel<double> model = make_walker_model(foot::foot_preset("point").spec);
+  const testing::ReferenceGait& reference = testing::reference_gait("point");
+  const WalkerModel<double>& model = reference.evaluator->model();
   GaitProblemOptions options;
-  Eigen::VectorXd z0;
-  Fixture() {
-    const StartingGait sg = starting_gait(GaitEvaluator(model), StartingGaitOptions{});
-    z0 = GaitProblem(model, options).initial_point(sg.x);
-  }
+  Eigen::VectorXd z0 = reference.start.x;
 };
 
 TEST(SmoothingHomotopy, SolvesEachStageFromTheLastAndPolishesTheExactObjective) {

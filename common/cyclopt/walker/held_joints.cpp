@@ -83,15 +83,8 @@ nlp::EvaluationStatus HeldJointProblem::evaluate(const Eigen::VectorXd& z, bool 
   }
   const VirtualConstraints<Dual> vc = virtual_constraints(model_, x);
   if (!vc.ok) return nlp::EvaluationStatus::failure(vc.failure);
-  Eigen::VectorXd c0 = out.equalities;
-  out.equalities.resize(num_equalities());
-  out.equalities.head(m0) = c0;
-  Eigen::MatrixXd J0;
-  if (with_derivatives) {
-    J0 = out.equality_jacobian;
-    out.equality_jacobian.resize(num_equalities(), n);
-    out.equality_jacobian.topRows(m0) = J0;
-  }
+  out.equalities.conservativeResize(num_equalities());  // the speed equality's rows stay on top
+  if (with_derivatives) out.equality_jacobian.conservativeResize(num_equalities(), n);
   int row = m0;
   for (int j : joints_)
     for (int i = 0; i < M; ++i, ++row) {
