@@ -37,29 +37,21 @@ double WorkerJobContext::elapsed_seconds() const {
 
 void WorkerJobContext::announce(int points_total) {
   points_total_ = points_total;
-  store_.set_points_total(job_.id, points_total);
+  store_access([&] { store_.set_points_total(job_.id, points_total); });
 }
 
 void WorkerJobContext::add_curve(int curve_index, const std::string& name, const std::string& parameter_name) {
-  store_.add_curve(job_.id, curve_index, name, parameter_name);
+  store_access([&] { store_.add_curve(job_.id, curve_index, name, parameter_name); });
 }
 
 bool WorkerJobContext::store_point(const storage::SolutionPoint& point) {
-  bool added = false;
-  try {
-    added = store_.store_point(job_.id, point);
+  const bool added = store_access([&] {
+    const bool new_point = store_.store_point(job_.id, point);
     checkpoint_time();
-  } catch (const storage::StorageError& e) {
-    record_store_error(e);
-    throw;
-  }
+    return new_point;
+  });
   if (added) ++points_stored_;
   return added;
-}
-
-void WorkerJobContext::record_store_error(const storage::StorageError& e) {
-  std::lock_guard lock(store_error_mutex_);
-  store_error_ = e.what();
 }
 
 void WorkerJobContext::checkpoint_time() {
@@ -70,15 +62,16 @@ void WorkerJobContext::checkpoint_time() {
   recorded_seconds_ = now;
 }
 
-std::set<storage::PointKey> WorkerJobContext::already_stored_points() { return store_.stored_points(job_.id); }
+std::set<storage::PointKey> WorkerJobContext::already_stored_points() {
+  return store_access([&] { return store_.stored_points(job_.id); });
+}
 
 void WorkerJobContext::store_checkpoint(const std::string& key, const std::string& value) {
-  try {
-    store_.store_checkpoint(job_.id, key, value);
-  } catch (const storage::StorageError& e) {  // as for a point: the job is re-queued
-    record_store_error(e);
-    throw;
-  }
+  store_access([&] { store_.store_checkpoint(job_.id, key, value); });
+}
+
+std::map<std::string, std::string> WorkerJobContext::stored_checkpoints() {
+  return store_access([&] { return store_.checkpoints(job_.id); });
 }
 
 service::StopReason WorkerJobContext::stop_reason() {

@@ -42,7 +42,7 @@ class WorkerJobContext final : public service::JobContext {
   bool store_point(const storage::SolutionPoint& point) override;
   std::set<storage::PointKey> already_stored_points() override;
   void store_checkpoint(const std::string& key, const std::string& value) override;
-  std::map<std::string, std::string> stored_checkpoints() override { return store_.checkpoints(job_.id); }
+  std::map<std::string, std::string> stored_checkpoints() override;
   service::StopReason stop_reason() override;
   // The executor's (job_executor.hpp): here, or on Slurm.
   void run_units(const std::vector<service::WorkUnit>& units, const service::UnitRun& run) override;
@@ -61,7 +61,8 @@ class WorkerJobContext final : public service::JobContext {
     std::lock_guard lock(checkpoint_mutex_);
     return elapsed_seconds() - recorded_seconds_;
   }
-  // Why the last store_point failed ("" if none did): the job is then re-queued, not failed.
+  // Why the last store access of the job failed ("" if none did): the job is then re-queued, not
+  // failed - a full disk is the server's trouble, not the job's.
   std::string store_error() {
     std::lock_guard lock(store_error_mutex_);
     return store_error_;
@@ -76,7 +77,18 @@ class WorkerJobContext final : public service::JobContext {
   cyclopt_lcm::job_progress_t publish(const service::ProgressReport& report);
   // The message's progress into the jobs table; `phase_event`: also an event and a log line.
   void record_progress(const cyclopt_lcm::job_progress_t& m, bool phase_event);
-  void record_store_error(const storage::StorageError& e);
+  // Runs a store access of the job's (its points, curves, checkpoints, announced total): a
+  // StorageError is recorded as store_error() before it propagates through the job.
+  template <class Access>
+  auto store_access(Access&& access) -> decltype(access()) {
+    try {
+      return access();
+    } catch (const storage::StorageError& e) {
+      std::lock_guard lock(store_error_mutex_);
+      store_error_ = e.what();
+      throw;
+    }
+  }
   void checkpoint_time();
   std::chrono::steady_clock::time_point last_checkpoint();
   static constexpr std::chrono::seconds kCheckpointInterval{5};

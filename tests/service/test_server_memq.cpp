@@ -240,6 +240,56 @@ TEST_F(ServerMemq, FullDiskRequeuesTheJobTellsItsWatchersAndKeepsItsPoints) {
   EXPECT_EQ(srv.store().job(ack.job_id)->points_stored, 400);
 }
 
+// Every store access of a job counts as a point's does: a job whose curve cannot be added (a full
+// disk, injected as PRAGMA query_only, before its first point) is re-queued and resumes, not
+// failed - a foot comparison of the soak test once failed so ("step: database or disk is full").
+TEST_F(ServerMemq, AFullDiskAtAJobsCurveRequeuesTheJobInsteadOfFailingIt) {
+  struct NoFields {};
+  std::atomic<int> attempts{0};
+  std::atomic<bool> disk_full{false};
+  kinds_ = service::JobKindRegistry();  // "foot_sweep" as this test's own kind: one curve, one point
+  kinds_.add(service::typed_job_kind<NoFields>(
+      "foot_sweep", {"walker"}, {}, [](const nlohmann::json&, const service::CommonJobFields&) { return NoFields{}; },
+      [&](const NoFields&, service::JobContext& ctx) {
+        ctx.announce(1);
+        if (attempts++ == 0)
+          while (!disk_full) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        ctx.add_curve(0, "the curve", "speed");
+        storage::SolutionPoint p;
+        p.key = {0, 0};
+        p.parameter = 1.0;
+        p.objective = 1.0;
+        p.status = "converged";
+        ctx.store_point(p);
+      },
+      [](const NoFields&) { return nlohmann::json::object(); }));
+  server::Server srv(config_, kinds_, lcm_);
+  auto set_query_only = [&](bool on) {
+    std::lock_guard lock(srv.store().mutex());
+    srv.store().connection().exec(std::string("PRAGMA query_only = ") + (on ? "1" : "0"));
+  };
+  const auto ack = submit("curve-on-full-disk", R"({"scene": "walker", "task": "foot_sweep"})");
+  ASSERT_TRUE(ack.accepted) << ack.problem;
+  while (attempts == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  set_query_only(true);
+  disk_full = true;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the curve fails; the worker retries its state
+  set_query_only(false);
+  auto done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
+  if (done && done->state == "queued") done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);  // re-queued; then
+  ASSERT_TRUE(done);
+  EXPECT_EQ(done->state, "done") << done->error;
+  EXPECT_EQ(attempts, 2);
+  const auto j = srv.store().job(ack.job_id);
+  EXPECT_EQ(j->state, storage::JobState::done);
+  EXPECT_EQ(j->points_stored, 1);
+  std::lock_guard lock(srv.store().mutex());
+  storage::Statement why(srv.store().connection(), "SELECT message FROM events WHERE job_id = ? AND kind = 'interrupted'");
+  why.bind(1, ack.job_id);
+  ASSERT_TRUE(why.step()) << "no 'interrupted' event";
+  EXPECT_NE(why.text(0).find("could not store"), std::string::npos) << why.text(0);
+}
+
 // A submission the store cannot take (a full disk, injected as PRAGMA query_only) is refused as the
 // server's failure, not the spec's: field "server", saying nothing was queued and that the same
 // request id may be sent again - which is accepted once the store takes writes again.
