@@ -8,12 +8,16 @@
 # (deploy/install-deps.sh --browser). With "pinned", cycloptd and cyclopt-web run on CPU 0 and the
 # browser on CPU 1 (taskset), as if the pages were open on the researcher's own machine: the sweep's
 # run time then shows what the pages cost the server, not the browser's drawing on a shared core.
-# usage: dashboard_bench.sh BUILD_DIR [ROUNDS] [pinned]
+# With "control" (after "pinned"), each round also runs the sweep beside a plain CPU load on the
+# browser's CPU that spends what the round's browser spent (a duty-cycled busy loop, no pages): on
+# one host the browser's CPU is not free for the sweep's core (shared caches, clock), and this
+# third run says how much of the pages' cost is that rather than the dashboard's.
+# usage: dashboard_bench.sh BUILD_DIR [ROUNDS] [pinned [control]]
 set -euo pipefail
 if [ "${CYCLOPT_IN_NETNS:-}" != 1 ]; then
   exec unshare -n env CYCLOPT_IN_NETNS=1 bash "$0" "$@"
 fi
-BUILD=$(realpath "$1") ROUNDS=${2:-2} PINNED=${3:-}
+BUILD=$(realpath "$1") ROUNDS=${2:-2} PINNED=${3:-} CONTROL=${4:-}
 SERVER_CPU=() BROWSER_CPU=()
 if [ "$PINNED" = pinned ]; then SERVER_CPU=(taskset -c 0) BROWSER_CPU=(taskset -c 1); fi
 HERE=$(dirname "$(realpath "$0")")
@@ -58,12 +62,27 @@ sleep 1.5
 start
 echo '{"scene": "walker", "task": "sweep", "name": "measured sweep", "foot": "point",
   "speeds": "0.8:0.005:1.4", "multistart": {"starts": 4, "seed": 3, "scale": 0.02}, "continuation": {"seed_speeds": 1.0}}' >"$WORK/sweep.json"
+# The control load: busy for a share `duty` of every 0.1 s.
+BURN='import sys, time
+duty = float(sys.argv[1])
+while True:
+    t0 = time.perf_counter()
+    while time.perf_counter() - t0 < 0.1 * duty: pass
+    time.sleep(0.1 * (1 - duty))'
+CONDITIONS="0 10"
+if [ "$CONTROL" = control ]; then CONDITIONS="0 10 load"; fi
 for round in $(seq "$ROUNDS"); do
-  for pages in 0 10; do
+  browser_cpu=0 pages_run=1
+  for pages in $CONDITIONS; do
     gate=$("$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "gate-$round-$pages" | awk '{ print $2 }')
     id=$("$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id "sweep-$round-$pages" | awk '{ print $2 }')
     : >"$WORK/pages.txt"
-    if [ "$pages" -gt 0 ]; then
+    duty=""
+    if [ "$pages" = load ]; then
+      duty=$(awk -v c="$browser_cpu" -v t="$pages_run" 'BEGIN { d = c / t; printf "%.3f", (d > 0.95 ? 0.95 : d) }')
+      "${BROWSER_CPU[@]}" python3 -c "$BURN" "$duty" &
+      BROWSER=$!
+    elif [ "$pages" -gt 0 ]; then
       "${BROWSER_CPU[@]}" node "$HERE/dashboard_bench.js" pages "$URL" "$id" "$pages" >"$WORK/pages.txt" &
       BROWSER=$!
       for _ in $(seq 600); do grep -q "pages ready" "$WORK/pages.txt" && break; sleep 0.1; done
@@ -72,11 +91,20 @@ for round in $(seq "$ROUNDS"); do
     "$CYCLOPT" cancel "$gate" >/dev/null
     "$CYCLOPT" watch "$id" >/dev/null 2>&1 || true
     web1=$(cpu_seconds $WEB)
+    run=$(run_seconds "$id")
     browser=""
-    if [ "$pages" -gt 0 ]; then
+    if [ "$pages" = load ]; then
+      browser=", the load $(cpu_seconds $BROWSER) CPU s (duty $duty)"
+      kill $BROWSER
+      wait $BROWSER 2>/dev/null || true
+    elif [ "$pages" -gt 0 ]; then
       wait $BROWSER
       browser=", $(tail -1 "$WORK/pages.txt")"
+      browser_cpu=$(tail -1 "$WORK/pages.txt" | awk '{ for (i = 1; i < NF; ++i) if ($i == "browser") { print $(i + 1); exit } }')
+      pages_run=$run
     fi
-    echo "round $round, $pages job pages open: sweep run $(run_seconds "$id") s; cyclopt-web $(awk -v a="$web0" -v b="$web1" 'BEGIN { printf "%.2f", b - a }') CPU s$browser; load $(cut -d' ' -f1 /proc/loadavg)"
+    what="$pages job pages open"
+    if [ "$pages" = load ]; then what="no page, a CPU load on the browser's CPU"; fi
+    echo "round $round, $what: sweep run $run s; cyclopt-web $(awk -v a="$web0" -v b="$web1" 'BEGIN { printf "%.2f", b - a }') CPU s$browser; load $(cut -d' ' -f1 /proc/loadavg)"
   done
 done
