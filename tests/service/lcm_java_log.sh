@@ -17,15 +17,7 @@ CYCLOPTD=$1 CYCLOPT=$2 CP=$3
 netns_loopback_multicast
 
 URL="udpm://239.255.76.67:7667?ttl=0"
-WORK=$(mktemp -d /tmp/cyclopt-java-log.XXXXXX)
-PIDS=()
-cleanup() {
-  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-  rm -rf "$WORK"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; [ -f "$WORK/server.log" ] && tail -20 "$WORK/server.log"; exit 1; }
+test_workspace java-log
 
 lcm-logger -q -f --channel='CYCLOPT_.*' --lcm-url="$URL" "$WORK/cyclopt.lcmlog" &
 LOGGER=$!

@@ -8,6 +8,10 @@
 #   netns_loopback_multicast                lo up, 224.0.0.0/4 routed to it; refuses to go on
 #                                           unless multicast stays on this namespace's loopback
 #   wait_for SECONDS COMMAND...             polls COMMAND every 0.05 s; fails after SECONDS
+#   test_workspace NAME                     WORK, a fresh /tmp/cyclopt-NAME.XXXXXX; PIDS, the processes
+#                                           to kill at exit; an EXIT trap that kills them, runs
+#                                           on_cleanup if the script defines one, and removes WORK
+#   fail MESSAGE...                         prints FAIL: MESSAGE and the tail of $WORK/server.log, exits 1
 
 netns_enter() {
   local seconds=$1 flags=$2
@@ -39,4 +43,23 @@ wait_for() {
     [ "$(date +%s)" -lt "$deadline" ] || return 1
     sleep 0.05
   done
+}
+
+test_workspace() {
+  WORK=$(mktemp -d "/tmp/cyclopt-$1.XXXXXX")
+  PIDS=()
+  trap workspace_cleanup EXIT
+}
+
+workspace_cleanup() {
+  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+  if declare -F on_cleanup >/dev/null; then on_cleanup; fi
+  rm -rf "$WORK"
+}
+
+fail() {
+  echo "FAIL: $*"
+  [ -f "$WORK/server.log" ] && tail -20 "$WORK/server.log"
+  exit 1
 }

@@ -21,16 +21,10 @@ netns_enter 110 "-n -m" "$0" "$@"
 CYCLOPTD=$1 CYCLOPT=$2
 netns_loopback_multicast
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
-WORK=$(mktemp -d /tmp/cyclopt-faults.XXXXXX)
-PIDS=()
-cleanup() {
-  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
+test_workspace faults
+on_cleanup() {
   umount "$WORK/ro" "$WORK/small" 2>/dev/null || true
-  rm -rf "$WORK"
 }
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; exit 1; }
 
 # 1. Read-only directory.
 mkdir -p "$WORK/ro"

@@ -18,16 +18,8 @@ netns_loopback_multicast
 
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 URL=$LCM_DEFAULT_URL
-WORK=$(mktemp -d /tmp/cyclopt-integration.XXXXXX)
+test_workspace integration
 DB=$WORK/results.db
-PIDS=()
-cleanup() {
-  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-  rm -rf "$WORK"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; [ -f "$WORK/server.log" ] && tail -20 "$WORK/server.log"; exit 1; }
 sql() { sqlite3 -batch -noheader "$DB" "$1"; }
 now() { date +%s.%N; }
 # Settings come from a config file (flags after it would override it).

@@ -19,15 +19,7 @@ CYCLOPTD=$1 CYCLOPT=$2 WIRE_FUZZ=$3 COUNT=$4
 netns_loopback_multicast
 
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
-WORK=$(mktemp -d /tmp/cyclopt-wire-fuzz.XXXXXX)
-PIDS=()
-cleanup() {
-  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
-  rm -rf "$WORK"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; [ -f "$WORK/server.log" ] && tail -20 "$WORK/server.log"; exit 1; }
+test_workspace wire-fuzz
 
 "$CYCLOPTD" --database "$WORK/results.db" --workers 1 >"$WORK/server.log" 2>&1 &
 SERVER=$!
