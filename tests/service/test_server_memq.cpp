@@ -246,7 +246,7 @@ TEST_F(ServerMemq, FullDiskRequeuesTheJobTellsItsWatchersAndKeepsItsPoints) {
 TEST_F(ServerMemq, AFullDiskAtAJobsCurveRequeuesTheJobInsteadOfFailingIt) {
   struct NoFields {};
   std::atomic<int> attempts{0};
-  std::atomic<bool> disk_full{false};
+  std::atomic<bool> disk_full{false}, curve_failed{false};
   kinds_ = service::JobKindRegistry();  // "foot_sweep" as this test's own kind: one curve, one point
   kinds_.add(service::typed_job_kind<NoFields>(
       "foot_sweep", {"walker"}, {}, [](const nlohmann::json&, const service::CommonJobFields&) { return NoFields{}; },
@@ -254,7 +254,12 @@ TEST_F(ServerMemq, AFullDiskAtAJobsCurveRequeuesTheJobInsteadOfFailingIt) {
         ctx.announce(1);
         if (attempts++ == 0)
           while (!disk_full) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        ctx.add_curve(0, "the curve", "speed");
+        try {
+          ctx.add_curve(0, "the curve", "speed");
+        } catch (...) {  // seen by the test, passed on to the worker as it came
+          curve_failed = true;
+          throw;
+        }
         storage::SolutionPoint p;
         p.key = {0, 0};
         p.parameter = 1.0;
@@ -273,8 +278,11 @@ TEST_F(ServerMemq, AFullDiskAtAJobsCurveRequeuesTheJobInsteadOfFailingIt) {
   while (attempts == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   set_query_only(true);
   disk_full = true;
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the curve fails; the worker retries its state
-  set_query_only(false);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!curve_failed && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_TRUE(curve_failed) << "the curve was added to a read-only database";
+  set_query_only(false);  // the worker, retrying the job's state meanwhile, re-queues it
   auto done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);
   if (done && done->state == "queued") done = client_.watch(ack.job_id, [](const auto&) {}, 60.0);  // re-queued; then
   ASSERT_TRUE(done);
