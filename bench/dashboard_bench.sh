@@ -77,7 +77,6 @@ for round in $(seq "$ROUNDS"); do
     gate=$("$CYCLOPT" submit --spec "$WORK/filler.json" --request-id "gate-$round-$pages" | awk '{ print $2 }')
     id=$("$CYCLOPT" submit --spec "$WORK/sweep.json" --request-id "sweep-$round-$pages" | awk '{ print $2 }')
     : >"$WORK/pages.txt"
-    duty=""
     if [ "$pages" = load ]; then
       duty=$(awk -v c="$browser_cpu" -v t="$pages_run" 'BEGIN { d = c / t; printf "%.3f", (d > 0.95 ? 0.95 : d) }')
       "${BROWSER_CPU[@]}" python3 -c "$BURN" "$duty" &
