@@ -14,7 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -224,6 +227,25 @@ void print_refit_notes(const ff::FitSpread& refits) {
   }
 }
 
+// On a terminal, the refits' count on one line of stderr while they run (seconds per foot at
+// 250 Hz), cleared when they end; elsewhere nothing, so logs and pipes stay as they were.
+ff::RefitProgress spread_progress() {
+  if (!isatty(fileno(stderr))) return {};
+  using Clock = std::chrono::steady_clock;
+  return [started = Clock::now(), shown = Clock::time_point{}, showing = false](std::size_t done, std::size_t total) mutable {
+    const Clock::time_point now = Clock::now();
+    if (done == total) {
+      if (showing) std::fprintf(stderr, "\r%48s\r", "");
+      showing = false;
+    } else if (now - shown >= std::chrono::milliseconds(250)) {
+      shown = now;
+      showing = true;
+      std::fprintf(stderr, "\rrefits for the spreads: %zu of %zu, %.0f s ", done, total,
+                   std::chrono::duration<double>(now - started).count());
+    }
+  };
+}
+
 }  // namespace
 
 int run_fit_command(int argc, char** argv) {
@@ -343,7 +365,7 @@ int run_fit_command(int argc, char** argv) {
     options.solver.parameter_tolerance = parameter_tolerance;
     ff::RollingFootFit fit = ff::fit_rolling_foot(tracks, options);
     ff::FitSpread refits;
-    if (spread) refits = ff::add_fit_spread(fit, trials, options, spread_options);
+    if (spread) refits = ff::add_fit_spread(fit, trials, options, spread_options, spread_progress());
     const ff::CircleFitStart& start = fit.start;
     std::vector<const ff::FootFitResult*> shown;
     if (model != "HMT") shown.push_back(&fit.hm);

@@ -19,6 +19,8 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <thread>
+#include <utility>
 
 namespace cf = cyclopt::foot_fit;
 namespace foot = cyclopt::foot;
@@ -285,7 +287,24 @@ TEST(GaitRecordings, SpreadsOverStridesAndBoundaries) {
   cf::RollingFootFit single = cf::fit_rolling_foot(cf::stance_tracks(one));
   cf::SpreadOptions corners;
   corners.boundary_steps = 1;
-  EXPECT_EQ(cf::add_fit_spread(single, one, {}, corners).refits.size(), 8u);  // the 3 x 3 shifts but (0, 0)
+  // Progress on the calling thread only, counting up to the refits' number, which the last call gives.
+  std::vector<std::pair<std::size_t, std::size_t>> progress;
+  const std::thread::id caller = std::this_thread::get_id();
+  bool elsewhere = false;
+  const auto note = [&](std::size_t done, std::size_t total) {
+    elsewhere = elsewhere || std::this_thread::get_id() != caller;
+    progress.emplace_back(done, total);
+  };
+  EXPECT_EQ(cf::add_fit_spread(single, one, {}, corners, note).refits.size(), 8u);  // the 3 x 3 shifts but (0, 0)
+  EXPECT_FALSE(elsewhere);
+  ASSERT_FALSE(progress.empty());
+  EXPECT_EQ(progress.back(), std::make_pair(std::size_t{8}, std::size_t{8}));
+  for (std::size_t k = 0; k < progress.size(); ++k) {
+    EXPECT_EQ(progress[k].second, 8u);
+    if (k > 0) {
+      EXPECT_GE(progress[k].first, progress[k - 1].first);
+    }
+  }
   EXPECT_TRUE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].stride_spread));
   EXPECT_FALSE(std::isnan(single.hmt.estimates[foot::hmt::l_HM].boundary_spread));
 }

@@ -87,7 +87,7 @@ void write_spreads(FootFitResult& fit, const std::vector<Refit>& refits, foot::F
 }  // namespace
 
 FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& trials, const FootFitOptions& fit_options,
-                         const SpreadOptions& o) {
+                         const SpreadOptions& o, const RefitProgress& on_refit) {
   if (!(o.boundary_tolerance >= 0.0 && o.boundary_tolerance <= 0.2))
     throw std::invalid_argument("boundary_tolerance: " + std::to_string(o.boundary_tolerance) + " s is not in [0, 0.2] s");
   if (!(o.flag_fraction > 0.0)) throw std::invalid_argument("flag_fraction: must be > 0");
@@ -115,17 +115,21 @@ FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& tria
   // number of threads.
   FitSpread spread;
   spread.refits.resize(jobs.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t j = next++; j < jobs.size(); j = next++)
+  std::atomic<std::size_t> next{0}, done{0};
+  auto work = [&](bool reports) {
+    for (std::size_t j = next++; j < jobs.size(); j = next++) {
       spread.refits[j] = refit(jobs[j].tracks, fit_options, jobs[j].what, jobs[j].stride);
+      const std::size_t finished = ++done;
+      if (reports && on_refit) on_refit(finished, jobs.size());
+    }
   };
   const int threads = std::min<int>(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())),
                                     static_cast<int>(jobs.size()));
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
+  work(true);
   for (std::thread& t : pool) t.join();
+  if (on_refit) on_refit(jobs.size(), jobs.size());
   write_spreads(fit.hm, spread.refits, &Refit::hm, &Refit::hm_converged, o);
   write_spreads(fit.hmt, spread.refits, &Refit::hmt, &Refit::hmt_converged, o);
   spread.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -25,6 +25,8 @@
 #include "cyclopt/foot_fit/rolling_foot_fit.hpp"
 #include "cyclopt/foot_fit/stances.hpp"
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,10 +60,14 @@ struct FitSpread {
   double seconds = 0.0;
 };
 
+// How far the refits are: `done` of `total`. Called on the calling thread only (which refits
+// too): after each of its own refits and once at the end with done == total.
+using RefitProgress = std::function<void(std::size_t done, std::size_t total)>;
+
 // Refits the trials' complete stances (stance_tracks) as `options` says and writes the spreads
 // and flags into the estimates of `fit` (ParameterEstimate::stride_spread, boundary_spread,
 // flag) and the counts into FootFitResult::spread_refits, spread_unconverged.
 FitSpread add_fit_spread(RollingFootFit& fit, const std::vector<GaitTrial>& trials, const FootFitOptions& fit_options = {},
-                         const SpreadOptions& options = {});
+                         const SpreadOptions& options = {}, const RefitProgress& on_refit = {});
 
 }  // namespace cyclopt::foot_fit
