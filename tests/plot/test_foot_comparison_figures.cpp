@@ -3,6 +3,8 @@
 // envelope, outlines of the rolling feet only; SVG and PNG are written.
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/job_report.hpp"
+#include "cyclopt/plot/legend.hpp"
+#include "cyclopt/plot/scene.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/io/foot_spec_json.hpp"
 #include "cyclopt/records/foot_comparison_records.hpp"
@@ -116,6 +118,25 @@ TEST(FootComparisonFigures, SeventeenCurvesStayApartByColourOrDash) {
       const bool same_colour = sa.color->r == sb.color->r && sa.color->g == sb.color->g && sa.color->b == sb.color->b;
       EXPECT_FALSE(same_colour && sa.dashed == sb.dashed) << sa.label << " and " << sb.label;
     }
+}
+
+TEST(FootComparisonFigures, TheOutlinesOfSixteenFeetLeaveRoomForTheirLegend) {
+  // Four columns of feet make a wide, low picture; capped at the page's width it was 373 px high,
+  // and the legend of 16 feet and the ankle (17 rows) ran out of the plot area.
+  plot::FootComparisonCurves c;
+  for (int k = 0; k < 16; ++k) {
+    plot::ComparedFootCurve f;
+    f.name = "foot " + std::to_string(k);
+    f.spec = foot::foot_preset("P2-shoes-left-HMT-SG").spec;
+    f.speed = {1.0};
+    f.f_mech = {0.02};
+    c.feet.push_back(f);
+  }
+  const plot::Scene outlines = plot::foot_outlines_scene(c);
+  const plot::RenderOptions size = plot::fitted_options(outlines, 760, 600, plot::kPageWidth);
+  EXPECT_LE(size.width, plot::kPageWidth);
+  constexpr double kTitleAndAxes = 110;  // pixels of the height outside the plot area (scene.cpp)
+  EXPECT_GE(size.height - kTitleAndAxes, plot::legend_height(17));
 }
 
 TEST(FootComparisonFigures, RejectsOtherJobs) {

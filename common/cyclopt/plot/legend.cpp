@@ -4,14 +4,23 @@
 #include <array>
 
 namespace cyclopt::plot {
+namespace {
+
+constexpr double kTextSize = 12, kRow = 18, kMargin = 8;
+
+double box_height(std::size_t entries) { return kRow * static_cast<double>(entries) + 8; }
+
+}  // namespace
+
+double legend_height(std::size_t entries) { return entries == 0 ? 0.0 : box_height(entries) + 2 * kMargin; }
 
 void draw_legend(Canvas& canvas, const Axes& axes, const std::vector<LegendEntry>& entries,
                  const std::vector<Point>& occupied) {
   if (entries.empty()) return;
-  constexpr double size = 12, row = 18, margin = 8;
+  constexpr double size = kTextSize, row = kRow, margin = kMargin;
   double w = 0;
   for (const LegendEntry& e : entries) w = std::max(w, canvas.text_width(e.text, size));
-  const double box_w = w + 46, box_h = row * static_cast<double>(entries.size()) + 8;
+  const double box_w = w + 46, box_h = box_height(entries.size());
   const Point pa = axes.plot_top_left();
   const double left = pa.x + margin, right = pa.x + axes.plot_width() - box_w - margin;
   const double top = pa.y + margin, bottom = pa.y + axes.plot_height() - box_h - margin;

@@ -3,6 +3,7 @@
 
 #include "cyclopt/plot/axes.hpp"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ struct LegendEntry {
   bool line = true;    // a line sample
   bool marker = false; // a dot sample
 };
+
+// Pixels of plot-area height that a legend of `entries` rows takes, its margins included.
+double legend_height(std::size_t entries);
 
 // `occupied`: pixel positions of the data, used to choose the corner.
 void draw_legend(Canvas& canvas, const Axes& axes, const std::vector<LegendEntry>& entries,

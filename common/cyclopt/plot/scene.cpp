@@ -64,9 +64,12 @@ RenderOptions fitted_options(const Scene& scene, double height, double min_width
   content(scene, xs, zs);
   const Range x = data_range(xs, scene.pad), z = data_range(zs, scene.pad);
   const double fixed_x = kMarginsX + scene.legend_room, fixed_z = kMarginsZ + scene.legend_headroom;
+  // The legend is drawn inside the plot area, so that is at least as high as the legend.
+  const double legend_fits = kMarginsZ + legend_height(legend_entries(scene).size());
+  height = std::max(height, legend_fits);
   const double width = fixed_x + (height - fixed_z) * (x.hi - x.lo) / (z.hi - z.lo);
   if (width <= max_width) return {std::max(width, min_width), height};
-  return {max_width, fixed_z + (max_width - fixed_x) * (z.hi - z.lo) / (x.hi - x.lo)};
+  return {max_width, std::max(legend_fits, fixed_z + (max_width - fixed_x) * (z.hi - z.lo) / (x.hi - x.lo))};
 }
 
 void render(const Scene& scene, const std::string& path, const RenderOptions& options) {

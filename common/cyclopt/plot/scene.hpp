@@ -53,7 +53,8 @@ inline constexpr double kPageWidth = 940;
 
 // Options whose size gives the scene's content (with its pad and legend room) the plot area's
 // aspect ratio, so equal scales waste no space: `height` pixels high, or, where that would be wider
-// than max_width, max_width wide and as high as the content then needs; at least min_width wide.
+// than max_width, max_width wide and as high as the content then needs; at least min_width wide,
+// and high enough that the plot area holds the scene's legend.
 RenderOptions fitted_options(const Scene& scene, double height, double min_width = 600, double max_width = 1800);
 
 // Writes the scene to `path` (.png, .svg or .pdf); throws std::invalid_argument for an empty scene.
