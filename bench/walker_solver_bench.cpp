@@ -13,8 +13,10 @@
 #include "cyclopt/walker/gait_optimisation.hpp"
 #include "machine_info.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 using namespace cyclopt;
@@ -37,6 +39,17 @@ void add_ipopt_option(nlp::IpoptOptions& o, const std::string& assignment) {
     o.string_options[name] = value;
 }
 
+// FNV-1a (64 bit) of the bytes of v.
+std::uint64_t fnv1a(const Eigen::VectorXd& v) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    unsigned char bytes[sizeof(double)];
+    std::memcpy(bytes, &v[i], sizeof bytes);
+    for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+  }
+  return h;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,8 +63,11 @@ int main(int argc, char** argv) {
   nlp::SolverOptions so = nlp::seed_table_6_2_options();
   so.solver = nlp::parse_solver_kind(argv[3]);
   if (argc > 4) so.max_iterations = std::atoi(argv[4]);
+  bool bits = false;
   for (int k = 5; k < argc; ++k)
-    if (std::string(argv[k]) == "difference_hessian")
+    if (std::string(argv[k]) == "bits")
+      bits = true;
+    else if (std::string(argv[k]) == "difference_hessian")
       so.sqp.difference_hessian = true;
     else if (std::string(argv[k]) == "difference_start")
       so.ipopt.difference_hessian_start = true;
@@ -74,4 +90,7 @@ int main(int argc, char** argv) {
               cyclopt::bench::machine_line().c_str(), foot_name.c_str(), po.speed, argv[3], nlp::to_string(s.termination),
               s.iterations, s.function_evaluations, s.jacobian_evaluations, s.failed_evaluations, s.objective,
               r.start_objective, s.kkt_error, s.constraint_violation, s.wall_seconds, s.message.c_str());
+  if (bits)
+    std::printf("bits: f %a, kkt %a, viol %a, z (%ld) fnv1a %016llx\n", s.objective, s.kkt_error, s.constraint_violation,
+                static_cast<long>(r.z.size()), static_cast<unsigned long long>(fnv1a(r.z)));
 }

@@ -5,6 +5,10 @@
 // (relative; bitwise in practice). Another level (x86-64-v2, native) takes other solver paths and
 // may reach other optima: the test says it is skipped there.
 //
+// The same instructions give the same arithmetic only if no choice follows the host at run time:
+// Eigen blocks its matrix products by the cache sizes it reads from CPUID unless EIGEN_NO_CPUID
+// (CMakeLists.txt), and the block size over the inner dimension orders the sums of J'J.
+//
 // A change that moves the optima on purpose (a solver, the model, a default) rewrites the file:
 //   CYCLOPT_WRITE_SWEEP_REFERENCE=1 build/tests/studies/test_reproducible_sweep
 // in the default build, and the commit says why the answer moved.
@@ -12,6 +16,7 @@
 #include "cyclopt/foot/foot_presets.hpp"
 #include "cyclopt/studies/speed_sweep.hpp"
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -42,6 +47,14 @@ SpeedSweepResult short_rolling_foot_sweep() {
 }
 
 }  // namespace
+
+TEST(ReproducibleSweep, EigenBlocksItsProductsBySizesThatDoNotFollowTheHost) {
+  std::ptrdiff_t l1 = 0, l2 = 0, l3 = 0;
+  Eigen::internal::manage_caching_sizes(Eigen::GetAction, &l1, &l2, &l3);
+  EXPECT_EQ(l1, Eigen::internal::defaultL1CacheSize) << "Eigen read this host's L1 size: build with EIGEN_NO_CPUID";
+  EXPECT_EQ(l2, Eigen::internal::defaultL2CacheSize) << "Eigen read this host's L2 size: build with EIGEN_NO_CPUID";
+  EXPECT_EQ(l3, Eigen::internal::defaultL3CacheSize) << "Eigen read this host's L3 size: build with EIGEN_NO_CPUID";
+}
 
 TEST(ReproducibleSweep, TheDefaultBuildReachesTheCommittedOptimaOnEveryHostOfItsLevel) {
   if (std::string(cli::build_arch()) != kReferenceArch)
