@@ -17,7 +17,7 @@
 // recovery (R1-R3) off. Options anywhere on the line: --seeds=1,2,3 (one search per seed,
 // SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8),
 // --kinks (every solve of the sweep - multistarts and correctors - with f_mech's kinks modelled,
-// nlp::KinkOptions, issue 52).
+// nlp::KinkOptions, issue 52), --seed-speeds=0.3,0.5,1.3,2.3 (SpeedSweepOptions::seed_speeds).
 #include "bench_foot.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
@@ -77,25 +77,34 @@ void print_fine_grid_errors(const walker::WalkerModel<double>& model, const walk
                 "at %.1f m/s\n", sum / n, n, sum_error / n, worst, worst_speed);
 }
 
+// "1,2,3" -> {1, 2, 3}
+template <class T, class Parse>
+std::vector<T> comma_list(const std::string& text, Parse parse) {
+  std::vector<T> values;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t comma = text.find(',', at);
+    values.push_back(parse(text.substr(at, comma - at)));
+    at = comma == std::string::npos ? text.size() : comma + 1;
+  }
+  return values;
+}
+
 }  // namespace
 
 int main(int argc_in, char** argv_in) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  // --seeds=, --closure= and --kinks anywhere; the rest are positional.
+  // --seeds=, --seed-speeds=, --closure= and --kinks anywhere; the rest are positional.
   std::vector<char*> positional;
   std::vector<std::uint64_t> seeds{1};
+  std::vector<double> seed_speeds = SpeedSweepOptions{}.seed_speeds;
   int closure_passes = EnvelopeClosureOptions{}.max_passes;
   bool kinks = false;
   for (int i = 0; i < argc_in; ++i) {
     const std::string a = argv_in[i];
     if (a.rfind("--seeds=", 0) == 0) {
-      seeds.clear();
-      std::size_t at = 8;
-      while (at < a.size()) {
-        const std::size_t comma = a.find(',', at);
-        seeds.push_back(std::stoull(a.substr(at, comma - at)));
-        at = comma == std::string::npos ? a.size() : comma + 1;
-      }
+      seeds = comma_list<std::uint64_t>(a.substr(8), [](const std::string& t) { return std::stoull(t); });
+    } else if (a.rfind("--seed-speeds=", 0) == 0) {
+      seed_speeds = comma_list<double>(a.substr(14), [](const std::string& t) { return std::stod(t); });
     } else if (a.rfind("--closure=", 0) == 0) {
       closure_passes = std::atoi(a.c_str() + 10);
     } else if (a == "--kinks") {
@@ -125,6 +134,10 @@ int main(int argc_in, char** argv_in) {
   o.starts = starts;
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   o.seeds = seeds;
+  o.seed_speeds = seed_speeds;
+  std::printf("seed speeds (multistart):");
+  for (double v : seed_speeds) std::printf(" %.2f", v);
+  std::printf(" m/s\n");
   o.closure.enabled = closure_passes > 0;
   o.closure.max_passes = std::max(closure_passes, 1);
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
