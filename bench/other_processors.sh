@@ -23,12 +23,14 @@ WORK=$(mktemp -d); trap 'rm -rf "$WORK"' EXIT
 # The SQP solve to its optimum (Table 6.2 options), Ipopt's first iterations (MUMPS and the BLAS).
 SOLVES=("P2-shoes-left-HMT 1.3 sqp 3000" "P2-shoes-left-HMT 1.3 ipopt 10")
 lscpu | grep -E "Model name"
-echo "host: $(/lib64/ld-linux-x86-64.so.2 --list-diagnostics | grep -E 'isa_1=|basic.kind=|level1_dcache_size=|level2_cache_size=' | tr '\n' ' ')"
+# What glibc sees of a processor: vendor, ISA level, L1d and L2 sizes ($@: qemu-x86_64 -cpu MODEL, or nothing).
+cpu_features() {
+  "$@" /lib64/ld-linux-x86-64.so.2 --list-diagnostics 2>/dev/null |
+    grep -E 'isa_1=|basic.kind=|level1_dcache_size=|level2_cache_size=' | tr '\n' ' '
+}
+echo "host: $(cpu_features)"
 bits() { grep '^bits:' || echo "no result"; }
-for model in "${MODELS[@]}"; do
-  echo "$model: $(qemu-x86_64 -cpu "$model" /lib64/ld-linux-x86-64.so.2 --list-diagnostics 2>/dev/null |
-    grep -E 'isa_1=|basic.kind=|level1_dcache_size=|level2_cache_size=' | tr '\n' ' ')"
-done
+for model in "${MODELS[@]}"; do echo "$model: $(cpu_features qemu-x86_64 -cpu "$model")"; done
 status=0
 declare -A native
 for solve in "${SOLVES[@]}"; do

@@ -3,6 +3,7 @@
 // envelope, outlines of the rolling feet only; SVG and PNG are written.
 #include "cyclopt/plot/foot_comparison_figures.hpp"
 #include "cyclopt/plot/job_report.hpp"
+#include "cyclopt/plot/axes.hpp"
 #include "cyclopt/plot/legend.hpp"
 #include "cyclopt/plot/scene.hpp"
 #include "cyclopt/foot/foot_presets.hpp"
@@ -135,8 +136,7 @@ TEST(FootComparisonFigures, TheOutlinesOfSixteenFeetLeaveRoomForTheirLegend) {
   const plot::Scene outlines = plot::foot_outlines_scene(c);
   const plot::RenderOptions size = plot::fitted_options(outlines, 760, 600, plot::kPageWidth);
   EXPECT_LE(size.width, plot::kPageWidth);
-  constexpr double kTitleAndAxes = 110;  // pixels of the height outside the plot area (scene.cpp)
-  EXPECT_GE(size.height - kTitleAndAxes, plot::legend_height(17));
+  EXPECT_GE(size.height - plot::kAxesTopTitled - plot::kAxesBottom, plot::legend_height(17));
 }
 
 TEST(FootComparisonFigures, RejectsOtherJobs) {

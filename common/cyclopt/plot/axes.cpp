@@ -75,10 +75,10 @@ Range value_range(const std::vector<double>& values) {
 
 Axes::Axes(Canvas& canvas, Range x, Range y, const AxesStyle& style, bool equal_scale)
     : canvas_(canvas), style_(style) {
-  left_ = 80;
-  top_ = style.title.empty() ? 20 : 48;
-  width_ = canvas.width() - left_ - 24;
-  height_ = canvas.height() - top_ - 62;
+  left_ = kAxesLeft;
+  top_ = style.title.empty() ? kAxesTopUntitled : kAxesTopTitled;
+  width_ = canvas.width() - left_ - kAxesRight;
+  height_ = canvas.height() - top_ - kAxesBottom;
   if (equal_scale) {
     const double scale = std::min(width_ / (x.hi - x.lo), height_ / (y.hi - y.lo));
     x = widen_to(x, width_ / scale);

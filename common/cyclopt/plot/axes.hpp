@@ -29,6 +29,10 @@ inline constexpr double kMinRelativeSpan = 0.1;
 // (a step length of 0.9818 to 0.9828 m) reads as the flat line it is, not as a steep one.
 Range value_range(const std::vector<double>& values);
 
+// Pixels Axes keeps around its plot area for tick labels, axis labels and the title.
+inline constexpr double kAxesLeft = 80, kAxesRight = 24, kAxesBottom = 62;
+inline constexpr double kAxesTopTitled = 48, kAxesTopUntitled = 20;
+
 struct AxesStyle {
   std::string title;
   std::string x_label;  // with unit, e.g. "mean speed v (m/s)"

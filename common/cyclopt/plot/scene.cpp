@@ -40,8 +40,8 @@ void content(const Scene& scene, std::vector<double>& xs, std::vector<double>& z
   if (scene.ground_z) zs.push_back(*scene.ground_z);
 }
 
-// Margins Axes keeps around the plot area (with a title): 80 + 24 px across, 48 + 62 px down.
-constexpr double kMarginsX = 104, kMarginsZ = 110;
+// Margins Axes keeps around the plot area of a titled scene, across and down.
+constexpr double kMarginsX = kAxesLeft + kAxesRight, kMarginsZ = kAxesTopTitled + kAxesBottom;
 
 // The plot area's data ranges on a canvas of w x h: the padded content at the largest equal scale
 // (px/m) that fits it beside legend_room and under legend_headroom, those pixels added as metres.
