@@ -17,7 +17,8 @@
 // recovery (R1-R3) off. Options anywhere on the line: --seeds=1,2,3 (one search per seed,
 // SpeedSweepOptions::seeds; default 1), --closure=N (passes at most of the envelope closure, 0 off; default 8),
 // --kinks (every solve of the sweep - multistarts and correctors - with f_mech's kinks modelled,
-// nlp::KinkOptions, issue 52), --seed-speeds=0.3,0.5,1.3,2.3 (SpeedSweepOptions::seed_speeds).
+// nlp::KinkOptions, issue 52), --seed-speeds=0.3,0.5,1.3,2.3 (SpeedSweepOptions::seed_speeds),
+// --max-curves=N (SpeedSweepOptions::max_curves, per search).
 #include "bench_foot.hpp"
 #include "cyclopt/service/value_range.hpp"
 #include "cyclopt/jobs/walker/walker_job_spec.hpp"
@@ -93,11 +94,12 @@ std::vector<T> comma_list(const std::string& text, Parse parse) {
 
 int main(int argc_in, char** argv_in) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  // --seeds=, --seed-speeds=, --closure= and --kinks anywhere; the rest are positional.
+  // --seeds=, --seed-speeds=, --closure=, --max-curves= and --kinks anywhere; the rest are positional.
   std::vector<char*> positional;
   std::vector<std::uint64_t> seeds{1};
   std::vector<double> seed_speeds = SpeedSweepOptions{}.seed_speeds;
   int closure_passes = EnvelopeClosureOptions{}.max_passes;
+  int max_curves = SpeedSweepOptions{}.max_curves;
   bool kinks = false;
   for (int i = 0; i < argc_in; ++i) {
     const std::string a = argv_in[i];
@@ -107,6 +109,8 @@ int main(int argc_in, char** argv_in) {
       seed_speeds = comma_list<double>(a.substr(14), [](const std::string& t) { return std::stod(t); });
     } else if (a.rfind("--closure=", 0) == 0) {
       closure_passes = std::atoi(a.c_str() + 10);
+    } else if (a.rfind("--max-curves=", 0) == 0) {
+      max_curves = std::atoi(a.c_str() + 13);
     } else if (a == "--kinks") {
       kinks = true;
     } else {
@@ -135,9 +139,10 @@ int main(int argc_in, char** argv_in) {
   o.recover = !(argc > 4 && std::string(argv[4]) == "plain");
   o.seeds = seeds;
   o.seed_speeds = seed_speeds;
+  o.max_curves = max_curves;
   std::printf("seed speeds (multistart):");
   for (double v : seed_speeds) std::printf(" %.2f", v);
-  std::printf(" m/s\n");
+  std::printf(" m/s; at most %d curves per search\n", max_curves);
   o.closure.enabled = closure_passes > 0;
   o.closure.max_passes = std::max(closure_passes, 1);
   if (argc > 7) o.coarse_points = std::atoi(argv[7]);
